@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Installs every Debian package isphdem needs. Idempotent: when all are present it does nothing.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake
+  liggghts libliggghts-dev          # LIGGGHTS 3.8.0 (pulls ParaView as a recommended package: keep it)
+  libeigen3-dev
+  libopenmpi-dev openmpi-bin
+  libhdf5-dev
+  libgtest-dev libgmock-dev
+  libtomlplusplus-dev
+  python3-h5py python3-matplotlib   # plotting scripts, run with /usr/bin/python3
+  paraview                          # pvpython opens our XDMF in a test
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+
+echo "setup: installing missing Debian packages: ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then SUDO="sudo"; else
+    echo "setup: need root (or sudo) to install: ${missing[*]}" >&2
+    exit 1
+  fi
+fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq "${missing[@]}"
