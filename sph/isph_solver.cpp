@@ -1,0 +1,242 @@
+#include "isph_solver.hpp"
+
+#include <omp.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "free_surface.hpp"
+
+namespace isph {
+
+namespace {
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s.precision(4);
+  s << v;
+  return s.str();
+}
+
+template <int Dim>
+std::string fmt(const Vec<Dim>& v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << "(";
+  for (int a = 0; a < Dim; ++a) s << (a ? ", " : "") << v[a];
+  s << ")";
+  return s.str();
+}
+
+// Accumulates wall-clock seconds into one timing bucket.
+class Stopwatch {
+ public:
+  explicit Stopwatch(double& bucket) : bucket_(bucket), t0_(omp_get_wtime()) {}
+  ~Stopwatch() { bucket_ += omp_get_wtime() - t0_; }
+
+ private:
+  double& bucket_;
+  double t0_;
+};
+
+}  // namespace
+
+template <int Dim>
+IsphSolver<Dim>::IsphSolver(const IsphConfig<Dim>& config, const Domain<Dim>& domain,
+                            Particles<Dim> particles)
+    : config_(config),
+      domain_(domain),
+      particles_(std::move(particles)),
+      kernel_(config.kernel, config.smoothing_ratio * particles_.spacing),
+      search_(domain, kernel_.support()),
+      linear_solver_(make_linear_solver(config.pressure_solver)) {
+  if (!(particles_.spacing > 0.0))
+    throw SimulationError("particle spacing must be positive (particles.spacing)");
+  if (particles_.size() == 0) throw SimulationError("the case creates no particles");
+  if (!(config.density > 0.0)) throw SimulationError("fluid.density must be positive");
+  if (config.viscosity < 0.0) throw SimulationError("fluid.viscosity must not be negative");
+  for (std::size_t i = 0; i < particles_.size(); ++i)
+    if (!domain_.contains(particles_.x[i]))
+      throw SimulationError("particle " + std::to_string(particles_.id[i]) + " at " +
+                            fmt<Dim>(particles_.x[i]) +
+                            " starts outside the domain box: enlarge domain.min/domain.max");
+  for (auto& x : particles_.x) domain_.wrap(x);
+  n0_ = reference_number_density(kernel_, particles_.spacing);
+}
+
+template <int Dim>
+double IsphSolver<Dim>::max_speed() const {
+  double m = 0.0;
+  for (std::size_t i = 0; i < particles_.size(); ++i)
+    if (particles_.kind[i] != kWall) m = std::max(m, particles_.v[i].norm());
+  return m;
+}
+
+template <int Dim>
+TimeStepLimits IsphSolver<Dim>::limits() const {
+  return time_step_limits(config_.time_step, particles_.spacing, max_speed(), config_.viscosity,
+                          config_.gravity.norm());
+}
+
+template <int Dim>
+void IsphSolver<Dim>::update_geometry() {
+  {
+    Stopwatch w(timings_.neighbors);
+    search_.sort(particles_);
+    search_.build(particles_, kernel_, nb_);
+  }
+  Stopwatch w(timings_.operators);
+  const int n = static_cast<int>(particles_.size());
+  active_.resize(n);
+  for (int i = 0; i < n; ++i) active_[i] = particles_.kind[i] != kWall;
+  compute_operators(nb_, kernel_.h(), particles_.volume, active_, op_);
+  number_density(nb_, number_density_);
+  if (config_.free_surface)
+    mark_free_surface(particles_, number_density_, n0_, config_.surface_threshold);
+  else
+    std::fill(particles_.surface.begin(), particles_.surface.end(), 0);
+}
+
+template <int Dim>
+StepStats IsphSolver<Dim>::step(double dt) {
+  if (!(dt > 0.0) || !std::isfinite(dt)) throw SimulationError("time step must be positive");
+  update_geometry();
+
+  const int n = static_cast<int>(particles_.size());
+  const double rho0 = config_.density;
+  const double nu = config_.viscosity;
+  auto& P = particles_;
+  StepStats stats;
+  stats.dt = dt;
+  {
+    Stopwatch w(timings_.rest);
+    // Velocities seen by fluid particles at wall neighbours (Adami et al. 2012): no-slip mirrors
+    // the Shepard-averaged fluid velocity through the wall velocity; free slip copies it.
+    wall_ghost_.resize(n);
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      if (P.kind[i] != kWall) {
+        wall_ghost_[i] = P.v[i];
+        continue;
+      }
+      double ws = 0.0;
+      Vec<Dim> vs = Vec<Dim>::Zero();
+      for (int k = nb_.begin(i); k < nb_.end(i); ++k) {
+        const int j = nb_.index[k];
+        if (P.kind[j] == kWall) continue;
+        ws += nb_.w[k];
+        vs += nb_.w[k] * P.v[j];
+      }
+      if (ws <= 0.0) {
+        wall_ghost_[i] = P.v[i];
+        continue;
+      }
+      vs /= ws;
+      wall_ghost_[i] = config_.wall == WallSlip::NoSlip ? Vec<Dim>(2.0 * P.v[i] - vs) : vs;
+    }
+
+    u_star_.resize(n);
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      if (P.kind[i] == kWall) {
+        u_star_[i] = P.v[i];
+        continue;
+      }
+      u_star_[i] = P.v[i] + dt * (nu * laplacian(nb_, op_, wall_ghost_, i) + config_.gravity);
+    }
+
+    rhs_.assign(n, 0.0);
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      if (P.kind[i] == kWall) continue;
+      const double density_error = 1.0 - number_density_[i] / n0_;
+      rhs_[i] = rho0 / dt * divergence(nb_, op_, u_star_, i) +
+                config_.alpha_s * rho0 * density_error / (dt * dt);
+    }
+  }
+  {
+    Stopwatch w(timings_.assembly);
+    assemble_pressure(P, nb_, op_, rhs_, config_.gravity, rho0, kernel_.h(), system_);
+  }
+  {
+    Stopwatch w(timings_.solve);
+    pressure_ = Eigen::Map<const Eigen::VectorXd>(P.p.data(), n);
+    const SolveStats s = linear_solver_->solve(system_.A, system_.b, pressure_);
+    stats.ppe_iterations = s.iterations;
+    stats.ppe_residual = s.residual;
+    if (!std::isfinite(s.residual) || s.residual > 1e-4)
+      throw SimulationError("pressure solver failed at t = " + fmt(time_) +
+                            " s (relative residual " + fmt(s.residual) + " after " +
+                            std::to_string(s.iterations) +
+                            " iterations): reduce time.dt or check the geometry for isolated "
+                            "particles");
+    Eigen::Map<Eigen::VectorXd>(P.p.data(), n) = pressure_;
+  }
+  {
+    Stopwatch w(timings_.rest);
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      if (P.kind[i] == kWall) continue;
+      P.v[i] = u_star_[i] - dt / rho0 * gradient(nb_, op_, P.p, i);
+    }
+
+    // Shift only particles whose whole support is inside the fluid: near the free surface the
+    // concentration gradient points out of the fluid.
+    eligible_.assign(n, 0);
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      if (P.kind[i] != kFluid || P.surface[i]) continue;
+      bool near_surface = false;
+      for (int k = nb_.begin(i); k < nb_.end(i) && !near_surface; ++k)
+        near_surface = P.surface[nb_.index[k]];
+      eligible_[i] = !near_surface;
+    }
+    compute_shifts(P, nb_, kernel_, config_.shifting, dt, eligible_, shift_);
+    // Taylor-correct velocities to the shifted positions (u_star_ reused as scratch).
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; ++i)
+      u_star_[i] =
+          eligible_[i] ? Vec<Dim>(P.v[i] + gradient(nb_, op_, P.v, i) * shift_[i]) : P.v[i];
+    P.v.swap(u_star_);
+
+    double vmax = 0.0;
+    for (int i = 0; i < n; ++i) {
+      if (P.kind[i] == kWall) continue;
+      P.x[i] += dt * P.v[i] + shift_[i];
+      domain_.wrap(P.x[i]);
+      vmax = std::max(vmax, P.v[i].norm());
+      stats.surface_particles += P.surface[i];
+    }
+    stats.max_speed = vmax;
+  }
+  time_ += dt;
+  ++steps_;
+  check_state("after the step");
+  if (dt * stats.max_speed > particles_.spacing)
+    throw SimulationError(
+        "time step far beyond the CFL limit at t = " + fmt(time_) + " s: dt = " + fmt(dt) +
+        " s moved particles " + fmt(dt * stats.max_speed / P.spacing) +
+        " spacings in one step (max |u| = " + fmt(stats.max_speed) +
+        " m/s); use time.dt = \"auto\" or a dt below " + fmt(limits().min()) + " s");
+  return stats;
+}
+
+template <int Dim>
+void IsphSolver<Dim>::check_state(const char* where) const {
+  const auto& P = particles_;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (!P.x[i].allFinite() || !P.v[i].allFinite() || !std::isfinite(P.p[i]))
+      throw SimulationError("non-finite value (NaN/inf) in particle " + std::to_string(P.id[i]) +
+                            " " + where + " at t = " + fmt(time_) +
+                            " s: the run became unstable; reduce time.dt (or use \"auto\")");
+    if (P.kind[i] != kWall && !domain_.contains(P.x[i]))
+      throw SimulationError("fluid particle " + std::to_string(P.id[i]) + " left the domain at " +
+                            fmt<Dim>(P.x[i]) + ", t = " + fmt(time_) +
+                            " s: close the container with walls or enlarge domain.min/max");
+  }
+}
+
+template class IsphSolver<2>;
+template class IsphSolver<3>;
+
+}  // namespace isph

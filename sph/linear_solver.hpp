@@ -1,0 +1,34 @@
+#pragma once
+// The pressure equation is non-symmetric (corrected Laplacian, wall extrapolation rows), so the
+// default is BiCGSTAB. The interface lets a distributed backend (PETSc, hypre) replace it later.
+#include <Eigen/Sparse>
+#include <memory>
+#include <string>
+
+namespace isph {
+
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+
+struct SolveStats {
+  int iterations = 0;
+  double residual = 0.0;  // relative: |b - A x| / |b|
+  bool converged = false;
+};
+
+struct LinearSolverConfig {
+  std::string method = "bicgstab";
+  std::string preconditioner = "ilut";  // "jacobi" or "ilut"
+  double tolerance = 1e-8;
+  int max_iterations = 2000;
+};
+
+class LinearSolver {
+ public:
+  virtual ~LinearSolver() = default;
+  // x holds the initial guess on entry (warm start) and the solution on exit.
+  virtual SolveStats solve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) = 0;
+};
+
+std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverConfig& config);
+
+}  // namespace isph

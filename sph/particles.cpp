@@ -1,0 +1,35 @@
+#include "particles.hpp"
+
+#include <algorithm>
+
+namespace isph {
+
+template <int Dim>
+void Particles<Dim>::add(const Vec<Dim>& pos, const Vec<Dim>& vel, int32_t k) {
+  x.push_back(pos);
+  v.push_back(vel);
+  p.push_back(0.0);
+  porosity.push_back(1.0);
+  kind.push_back(k);
+  id.push_back(next_id++);
+  surface.push_back(0);
+}
+
+template <int Dim>
+void Particles<Dim>::permute(const std::vector<int>& perm) {
+  for_each_array([&](auto& a) {
+    std::remove_reference_t<decltype(a)> out(a.size());
+    for (std::size_t n = 0; n < perm.size(); ++n) out[n] = a[perm[n]];
+    a.swap(out);
+  });
+}
+
+template <int Dim>
+std::size_t Particles<Dim>::count(int32_t k) const {
+  return static_cast<std::size_t>(std::count(kind.begin(), kind.end(), k));
+}
+
+template struct Particles<2>;
+template struct Particles<3>;
+
+}  // namespace isph

@@ -1,0 +1,50 @@
+#pragma once
+// Structure-of-arrays particle storage. Every per-particle array is listed in for_each_array so
+// that re-sorting (for cache locality) and appending can never forget one.
+#include <cstdint>
+#include <vector>
+
+#include "vec.hpp"
+
+namespace isph {
+
+// Values are part of the output contract (/fluid/kind).
+enum Kind : int32_t { kFluid = 0, kWall = 1, kSolid = 2, kForcing = 3 };
+
+template <int Dim>
+struct Particles {
+  std::vector<Vec<Dim>> x;       // position [m]
+  std::vector<Vec<Dim>> v;       // (Darcy) velocity [m/s]; prescribed velocity for walls/solids
+  std::vector<double> p;         // pressure [Pa]
+  std::vector<double> porosity;  // fluid volume fraction, 1 in clear fluid
+  std::vector<int32_t> kind;     // Kind
+  std::vector<int64_t> id;       // stable identity across re-sorting
+  std::vector<uint8_t> surface;  // 1 where the free-surface condition p = 0 applies
+
+  double volume = 0.0;   // particle volume dx^Dim (uniform spacing)
+  double spacing = 0.0;  // dx
+  int64_t next_id = 0;
+
+  std::size_t size() const { return x.size(); }
+
+  // Appends one particle; id defaults to the next free one.
+  void add(const Vec<Dim>& pos, const Vec<Dim>& vel, int32_t k);
+
+  // Reorders every array so that new index n holds old index perm[n].
+  void permute(const std::vector<int>& perm);
+
+  std::size_t count(int32_t k) const;
+
+  template <class F>
+  void for_each_array(F&& f) {
+    f(x);
+    f(v);
+    f(p);
+    f(porosity);
+    f(kind);
+    f(id);
+    f(surface);
+  }
+};
+
+}  // namespace isph

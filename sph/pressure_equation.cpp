@@ -1,0 +1,109 @@
+#include "pressure_equation.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace isph {
+
+template <int Dim>
+void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
+                       const Operators<Dim>& op, const std::vector<double>& rhs,
+                       const Vec<Dim>& gravity, double rho0, double h, PressureSystem<Dim>& out) {
+  const int n = static_cast<int>(particles.size());
+  // Interior rows are scaled by h^2 so that all rows have O(1) coefficients.
+  const double scale = h * h;
+
+  bool has_dirichlet = false;
+  for (int i = 0; i < n; ++i)
+    if (particles.kind[i] != kWall && particles.surface[i]) has_dirichlet = true;
+  out.pinned = -1;
+  if (!has_dirichlet)
+    for (int i = 0; i < n && out.pinned < 0; ++i)
+      if (particles.kind[i] != kWall && op.order[i] > 0) out.pinned = i;
+
+  // Build CSR directly: one diagonal plus one entry per neighbour in every row.
+  SparseMatrix& A = out.A;
+  A.resize(n, n);
+  A.resizeNonZeros(nb.pairs() + n);
+  int* outer = A.outerIndexPtr();
+  int* inner = A.innerIndexPtr();
+  double* val = A.valuePtr();
+  outer[0] = 0;
+  for (int i = 0; i < n; ++i) outer[i + 1] = outer[i] + 1 + (nb.end(i) - nb.begin(i));
+  out.b.resize(n);
+
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    const int b = nb.begin(i), e = nb.end(i);
+    // Row layout: entries sorted by column, the diagonal inserted in order.
+    int pos = outer[i];
+    double diag = 0.0;
+    double bi = 0.0;
+    auto put_neighbors = [&](auto&& coef) {
+      bool diag_done = false;
+      int diag_pos = -1;
+      // Neighbour indices are in cell order, not sorted: sort a small local copy.
+      thread_local std::vector<std::pair<int, double>> row;
+      row.clear();
+      for (int k = b; k < e; ++k) row.emplace_back(nb.index[k], coef(k));
+      std::sort(row.begin(), row.end());
+      for (const auto& [j, c] : row) {
+        if (!diag_done && j > i) {
+          diag_pos = pos;
+          inner[pos++] = i;
+          diag_done = true;
+        }
+        inner[pos] = j;
+        val[pos++] = c;
+      }
+      if (!diag_done) {
+        diag_pos = pos;
+        inner[pos++] = i;
+      }
+      return diag_pos;
+    };
+
+    const bool wall = particles.kind[i] == kWall;
+    const bool dirichlet = (!wall && particles.surface[i]) || i == out.pinned;
+    if (dirichlet || (op.order[i] == 0 && !wall)) {
+      const int d = put_neighbors([](int) { return 0.0; });
+      val[d] = 1.0;
+      out.b[i] = 0.0;
+      continue;
+    }
+    if (wall) {
+      double wsum = 0.0;
+      Vec<Dim> acc = gravity;  // static walls: a_w = 0
+      for (int k = b; k < e; ++k)
+        if (particles.kind[nb.index[k]] != kWall) wsum += nb.w[k];
+      if (wsum <= 0.0) {
+        const int d = put_neighbors([](int) { return 0.0; });
+        val[d] = 1.0;
+        out.b[i] = 0.0;
+        continue;
+      }
+      const int d = put_neighbors(
+          [&](int k) { return particles.kind[nb.index[k]] != kWall ? -nb.w[k] / wsum : 0.0; });
+      for (int k = b; k < e; ++k)
+        if (particles.kind[nb.index[k]] != kWall) bi += nb.w[k] * acc.dot(nb.rij[k]);
+      val[d] = 1.0;
+      out.b[i] = rho0 * bi / wsum;
+      continue;
+    }
+    const int d = put_neighbors([&](int k) {
+      diag -= op.lap[k];
+      return op.lap[k] * scale;
+    });
+    val[d] = diag * scale;
+    out.b[i] = rhs[i] * scale;
+  }
+}
+
+template void assemble_pressure<2>(const Particles<2>&, const Neighbors<2>&, const Operators<2>&,
+                                   const std::vector<double>&, const Vec<2>&, double, double,
+                                   PressureSystem<2>&);
+template void assemble_pressure<3>(const Particles<3>&, const Neighbors<3>&, const Operators<3>&,
+                                   const std::vector<double>&, const Vec<3>&, double, double,
+                                   PressureSystem<3>&);
+
+}  // namespace isph

@@ -1,0 +1,32 @@
+#pragma once
+// Assembly of the pressure Poisson equation. One row per particle:
+//  - fluid-like particles (fluid, forcing zone, PMS solid): lap p_i = rhs_i with the corrected
+//    Laplacian;
+//  - free-surface particles: p_i = 0;
+//  - wall/dummy particles: p_w = sum_f W_wf (p_f + rho0 (g - a_w).(x_w - x_f)) / sum_f W_wf over
+//    fluid neighbours f (Adami et al. 2012 extrapolation, solved implicitly with the fluid so
+//    the wall condition and the interior equation are consistent in one system);
+//  - wall particles without fluid neighbours: p_w = 0 (decoupled);
+//  - with no Dirichlet row at all (closed or periodic box), one fluid row is pinned to p = 0 to
+//    remove the constant null space.
+#include <vector>
+
+#include "linear_solver.hpp"
+#include "neighbors.hpp"
+#include "operators.hpp"
+
+namespace isph {
+
+template <int Dim>
+struct PressureSystem {
+  SparseMatrix A;
+  Eigen::VectorXd b;
+  int pinned = -1;  // index of the pinned row, -1 when a Dirichlet row fixes the level
+};
+
+template <int Dim>
+void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
+                       const Operators<Dim>& op, const std::vector<double>& rhs,
+                       const Vec<Dim>& gravity, double rho0, double h, PressureSystem<Dim>& out);
+
+}  // namespace isph

@@ -1,0 +1,39 @@
+#include "shifting.hpp"
+
+namespace isph {
+
+template <int Dim>
+void compute_shifts(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
+                    const Kernel<Dim>& kernel, const ShiftingParams& params, double dt,
+                    const std::vector<uint8_t>& eligible, std::vector<Vec<Dim>>& shift) {
+  const int n = static_cast<int>(particles.size());
+  shift.assign(n, Vec<Dim>::Zero());
+  if (!params.enabled) return;
+  const double dx = particles.spacing;
+  const double w_dx = kernel.value(dx);
+  const double cap = params.max_fraction * dx;
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    if (!eligible[i]) continue;
+    Vec<Dim> grad_c = Vec<Dim>::Zero();
+    for (int k = nb.begin(i); k < nb.end(i); ++k) {
+      const double q = nb.w[k] / w_dx;
+      grad_c += (1.0 + params.tensile_r * q * q * q * q) * nb.dw[k];
+    }
+    grad_c *= particles.volume;
+    const double D = params.coefficient * kernel.h() * particles.v[i].norm() * dt;
+    Vec<Dim> dr = -D * grad_c;
+    const double len = dr.norm();
+    if (len > cap) dr *= cap / len;
+    shift[i] = dr;
+  }
+}
+
+template void compute_shifts<2>(const Particles<2>&, const Neighbors<2>&, const Kernel<2>&,
+                                const ShiftingParams&, double, const std::vector<uint8_t>&,
+                                std::vector<Vec<2>>&);
+template void compute_shifts<3>(const Particles<3>&, const Neighbors<3>&, const Kernel<3>&,
+                                const ShiftingParams&, double, const std::vector<uint8_t>&,
+                                std::vector<Vec<3>>&);
+
+}  // namespace isph

@@ -1,0 +1,26 @@
+#pragma once
+// Fickian particle shifting (Lind et al. 2012, with Skillen et al. 2013's velocity-scaled
+// diffusion coefficient): particles drift down the gradient of the particle concentration so
+// that the distribution stays near-uniform, which keeps the corrected operators well conditioned.
+// Field values are corrected by a first-order Taylor step to the shifted position.
+#include <vector>
+
+#include "operators.hpp"
+
+namespace isph {
+
+struct ShiftingParams {
+  bool enabled = true;
+  double coefficient = 2.0;   // A in D = A h |u| dt
+  double max_fraction = 0.1;  // |dr| <= max_fraction * dx
+  double tensile_r = 0.2;     // anti-clumping term R (W_ij / W(dx))^4
+};
+
+// Returns the shift of every particle (zero where not shifted). `eligible[i]` selects particles
+// that may move (fluid away from the free surface).
+template <int Dim>
+void compute_shifts(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
+                    const Kernel<Dim>& kernel, const ShiftingParams& params, double dt,
+                    const std::vector<uint8_t>& eligible, std::vector<Vec<Dim>>& shift);
+
+}  // namespace isph
