@@ -11,7 +11,9 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
 struct SolveStats {
   int iterations = 0;
-  double residual = 0.0;  // relative: |b - A x| / |b|
+  // |b - A x| / max(|b|, reference): converged when <= tolerance. The reference keeps a
+  // right-hand side that is zero up to round-off (a flow already divergence-free) solvable.
+  double residual = 0.0;
   bool converged = false;
 };
 
@@ -25,8 +27,10 @@ struct LinearSolverConfig {
 class LinearSolver {
  public:
   virtual ~LinearSolver() = default;
-  // x holds the initial guess on entry (warm start) and the solution on exit.
-  virtual SolveStats solve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) = 0;
+  // x holds the initial guess on entry (warm start) and the solution on exit. `reference` is the
+  // norm of a right-hand side of physical size (0: |b| alone).
+  virtual SolveStats solve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                           double reference = 0.0) = 0;
 };
 
 std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverConfig& config);

@@ -1,0 +1,28 @@
+#pragma once
+// Validation tests run the shipped example cases (with --set-style overrides), so examples and
+// tests cannot drift apart.
+#include <string>
+#include <vector>
+
+#include "case_file.hpp"
+#include "fluid_scene.hpp"
+#include "run_settings.hpp"
+
+namespace isphdem::validation {
+
+inline std::string example(const std::string& name) {
+  return std::string(ISPHDEM_SOURCE_DIR) + "/examples/" + name + "/case.toml";
+}
+
+inline std::vector<std::string> all_fluid_keys() {
+  auto k = fluid_scene_keys();
+  const auto r = run_settings_keys();
+  k.insert(k.end(), r.begin(), r.end());
+  return k;
+}
+
+inline CaseFile load_example(const std::string& name, const std::vector<std::string>& overrides) {
+  return CaseFile::load(example(name), overrides, all_fluid_keys());
+}
+
+}  // namespace isphdem::validation
