@@ -34,14 +34,14 @@ std::vector<double> parse_row(const std::string& line) {
   return out;
 }
 
-const std::vector<std::string> kColumns = {"time", "step", "wall_seconds", "ppe_iterations",
-                                           "max_speed", "bed_height"};
+const std::vector<std::string> kColumns = {"time",           "step",      "wall_seconds",
+                                           "ppe_iterations", "max_speed", "bed_height"};
 
 TEST(DiagnosticsWriter, HeaderThenRowsThatReadBackExactly) {
   const auto path = scratch_dir() / "diagnostics.csv";
   const std::vector<double> a = {0.1, 1200, 1.0 / 3.0, 57, 1e-300, -2.5e17};
-  const std::vector<double> b = {0.30000000000000004, 1201, 3.14159, 0,
-                                 std::numeric_limits<double>::infinity(), std::nan("")};
+  const std::vector<double> b = {
+      0.30000000000000004, 1201, 3.14159, 0, std::numeric_limits<double>::infinity(), std::nan("")};
   {
     DiagnosticsWriter d(path, kColumns);
     d.row(a);

@@ -32,9 +32,7 @@ class File {
   File(const File&) = delete;
   File& operator=(const File&) = delete;
 
-  bool has(const std::string& path) const {
-    return H5Lexists(id_, path.c_str(), H5P_DEFAULT) > 0;
-  }
+  bool has(const std::string& path) const { return H5Lexists(id_, path.c_str(), H5P_DEFAULT) > 0; }
 
   Array read(const std::string& path) const {
     Array a;

@@ -111,8 +111,8 @@ class Parser {
   }
   std::string name() {
     const auto b = i_;
-    while (i_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[i_])) ||
-                              s_[i_] == '_' || s_[i_] == '-' || s_[i_] == ':' || s_[i_] == '.'))
+    while (i_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[i_])) || s_[i_] == '_' ||
+                              s_[i_] == '-' || s_[i_] == ':' || s_[i_] == '.'))
       ++i_;
     if (b == i_) fail("expected a name");
     return s_.substr(b, i_ - b);

@@ -51,31 +51,43 @@ inline void add_fluid(isphdem::Snapshot& s, std::size_t n, int dim) {
   auto& g = s.group("fluid");
   const double t = static_cast<double>(s.step);
   g.add_generated<double>("position", n, dim, [&](std::size_t i, std::size_t c) {
-    return 0.01 * static_cast<double>(i % 10) + (c == 1 ? 0.013 * static_cast<double>(i / 10) : 0.0) +
-           (c == 2 ? 0.1 : 0.0);
+    return 0.01 * static_cast<double>(i % 10) +
+           (c == 1 ? 0.013 * static_cast<double>(i / 10) : 0.0) + (c == 2 ? 0.1 : 0.0);
   });
-  g.add_generated<double>("velocity", n, dim,
-                          [&](std::size_t i, std::size_t c) { return 1e-3 * (i + 1) * (c + 1) + t; });
-  g.add_generated<double>("pressure", n, 1, [&](std::size_t i, std::size_t) { return 1000.0 + i + 0.5 * t; });
-  g.add_generated<double>("porosity", n, 1, [&](std::size_t i, std::size_t) { return 0.4 + 0.5 * i / n; });
-  g.add_generated<std::int32_t>("kind", n, 1, [&](std::size_t i, std::size_t) { return i >= 3 * n / 4 ? 1 : 0; });
-  g.add_generated<std::int64_t>("id", n, 1, [&](std::size_t i, std::size_t) { return static_cast<std::int64_t>(i) + (1LL << 40); });
+  g.add_generated<double>("velocity", n, dim, [&](std::size_t i, std::size_t c) {
+    return 1e-3 * (i + 1) * (c + 1) + t;
+  });
+  g.add_generated<double>("pressure", n, 1,
+                          [&](std::size_t i, std::size_t) { return 1000.0 + i + 0.5 * t; });
+  g.add_generated<double>("porosity", n, 1,
+                          [&](std::size_t i, std::size_t) { return 0.4 + 0.5 * i / n; });
+  g.add_generated<std::int32_t>("kind", n, 1,
+                                [&](std::size_t i, std::size_t) { return i >= 3 * n / 4 ? 1 : 0; });
+  g.add_generated<std::int64_t>("id", n, 1, [&](std::size_t i, std::size_t) {
+    return static_cast<std::int64_t>(i) + (1LL << 40);
+  });
 }
 
 inline void add_dem(isphdem::Snapshot& s, std::size_t m) {
   auto& g = s.group("dem");
-  g.add_generated<double>("position", m, 3, [&](std::size_t i, std::size_t c) { return 0.002 * i + 0.1 * c; });
-  g.add_generated<double>("velocity", m, 3, [&](std::size_t i, std::size_t c) { return -0.1 * i * (c + 1); });
-  g.add_generated<double>("radius", m, 1, [&](std::size_t i, std::size_t) { return 5e-4 + 1e-5 * i; });
+  g.add_generated<double>("position", m, 3,
+                          [&](std::size_t i, std::size_t c) { return 0.002 * i + 0.1 * c; });
+  g.add_generated<double>("velocity", m, 3,
+                          [&](std::size_t i, std::size_t c) { return -0.1 * i * (c + 1); });
+  g.add_generated<double>("radius", m, 1,
+                          [&](std::size_t i, std::size_t) { return 5e-4 + 1e-5 * i; });
   g.add_generated<std::int64_t>("id", m, 1, [&](std::size_t i, std::size_t) { return i + 1; });
-  g.add_generated<std::int64_t>("body", m, 1, [&](std::size_t i, std::size_t) { return i % 2 ? -1 : 0; });
-  g.add_generated<double>("force_hydro", m, 3, [&](std::size_t i, std::size_t c) { return 1e-6 * i - 1e-7 * c; });
+  g.add_generated<std::int64_t>("body", m, 1,
+                                [&](std::size_t i, std::size_t) { return i % 2 ? -1 : 0; });
+  g.add_generated<double>("force_hydro", m, 3,
+                          [&](std::size_t i, std::size_t c) { return 1e-6 * i - 1e-7 * c; });
 }
 
 inline void add_bodies(isphdem::Snapshot& s, std::size_t b) {
   auto& g = s.group("bodies");
   auto vec = [&](const char* name, std::size_t cols, double scale) {
-    g.add_generated<double>(name, b, cols, [&](std::size_t i, std::size_t c) { return scale * (i + 1) + c; });
+    g.add_generated<double>(name, b, cols,
+                            [&](std::size_t i, std::size_t c) { return scale * (i + 1) + c; });
   };
   vec("position", 3, 0.01);
   vec("velocity", 3, 0.1);

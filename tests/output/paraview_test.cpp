@@ -22,8 +22,8 @@ output_test::Result check_xdmf(const std::filesystem::path& dir, const std::stri
                           " " + quote(dir.string()) + " " + args);
 }
 
-#define CHECK_XDMF_OR_SKIP(result, dir, args)                               \
-  const output_test::Result result = check_xdmf(dir, args);                 \
+#define CHECK_XDMF_OR_SKIP(result, dir, args)               \
+  const output_test::Result result = check_xdmf(dir, args); \
   if (result.exit_code == -2) GTEST_SKIP() << "pvpython not on PATH";
 
 TEST(ParaView, OpensTwoDimensionalRunAsTimeSeries) {

@@ -103,7 +103,8 @@ TEST(SnapshotWriter, RoundTrip3DFromArrayOfStructs) {
   };
   std::vector<Particle> ps;
   for (int i = 0; i < 7; ++i)
-    ps.push_back({{i * 0.1, -i * 0.2, 1e-9 * i}, {1.0 / (i + 1), 0, -2.5}, 101325.0 + i, i % 4, 7L * i});
+    ps.push_back(
+        {{i * 0.1, -i * 0.2, 1e-9 * i}, {1.0 / (i + 1), 0, -2.5}, 101325.0 + i, i % 4, 7L * i});
   Snapshot s;
   s.step = 42;
   s.time = 1.0 / 3.0;

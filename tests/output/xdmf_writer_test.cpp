@@ -45,10 +45,17 @@ void expect_data_item_resolves(const fs::path& dir, const mini_xml::Element& ite
   EXPECT_EQ(split(item.attr("Dimensions")), dims);
   const std::string type = item.attr("NumberType") + item.attr("Precision");
   switch (a.type) {
-    case h5_read::Type::f64: EXPECT_EQ(type, "Float8"); break;
-    case h5_read::Type::i64: EXPECT_EQ(type, "Int8"); break;
-    case h5_read::Type::i32: EXPECT_EQ(type, "Int4"); break;
-    default: ADD_FAILURE() << "unexpected dtype";
+    case h5_read::Type::f64:
+      EXPECT_EQ(type, "Float8");
+      break;
+    case h5_read::Type::i64:
+      EXPECT_EQ(type, "Int8");
+      break;
+    case h5_read::Type::i32:
+      EXPECT_EQ(type, "Int4");
+      break;
+    default:
+      ADD_FAILURE() << "unexpected dtype";
   }
 }
 
@@ -103,7 +110,8 @@ TEST(XdmfSeries, ThreeSnapshotsMakeThreeAscendingSteps) {
   EXPECT_EQ(check_series(dir / "dem.xdmf",
                          {4, "XYZ", {"velocity", "radius", "id", "body", "force_hydro"}}),
             times);
-  EXPECT_EQ(check_series(dir / "bodies.xdmf", {2, "XYZ",
+  EXPECT_EQ(check_series(dir / "bodies.xdmf", {2,
+                                               "XYZ",
                                                {"velocity", "omega", "quat", "mass", "volume",
                                                 "force_hydro", "torque_hydro"}}),
             times);
@@ -162,11 +170,11 @@ TEST(XdmfDocument, AttributeTypeFollowsColumnCount) {
   for (const auto* a : doc.one("Domain").one("Grid").one("Grid").all("Attribute"))
     types[a->attr("Name")] = a->attr("AttributeType");
   EXPECT_EQ(types, (std::map<std::string, std::string>{{"a1", "Scalar"},
-                                                        {"a2", "Vector"},
-                                                        {"a3", "Vector"},
-                                                        {"a4", "Matrix"},
-                                                        {"a6", "Tensor6"},
-                                                        {"a9", "Tensor"}}));
+                                                       {"a2", "Vector"},
+                                                       {"a3", "Vector"},
+                                                       {"a4", "Matrix"},
+                                                       {"a6", "Tensor6"},
+                                                       {"a9", "Tensor"}}));
 }
 
 TEST(XdmfDocument, StepsWithoutPointsOrPositionAreLeftOut) {
