@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -51,6 +52,9 @@ struct Group {
   template <class T>
   Dataset& add_values(std::string dataset_name, std::vector<T> values, std::size_t rows,
                       std::size_t cols = 1) {
+    static_assert(std::is_same_v<T, double> || std::is_same_v<T, std::int64_t> ||
+                      std::is_same_v<T, std::int32_t>,
+                  "snapshot datasets hold double, int64_t or int32_t: convert with add_generated");
     datasets.push_back(
         Dataset{std::move(dataset_name), Dataset::Values(std::move(values)), rows, cols});
     return datasets.back();

@@ -25,7 +25,8 @@ bool is_snapshot_name(const std::string& name, long* step = nullptr) {
       name.compare(name.size() - suffix, suffix, ".h5") != 0)
     return false;
   const std::string digits = name.substr(prefix, name.size() - prefix - suffix);
-  if (digits.find_first_not_of("0123456789") != std::string::npos) return false;
+  if (digits.size() > 18 || digits.find_first_not_of("0123456789") != std::string::npos)
+    return false;  // (18 digits always fit a long)
   if (step) *step = std::stol(digits);
   return true;
 }
@@ -34,11 +35,11 @@ bool is_xdmf_name(const std::string& name) {
   return name.size() > 5 && name.compare(name.size() - 5, 5, ".xdmf") == 0;
 }
 
-// Only our own temporaries: ".snap_<step>.h5.tmp", ".<group>.xdmf.tmp", ".diagnostics.csv.tmp".
+// Only our own temporaries: ".snap_<step>.h5.tmp", ".<group>.xdmf.tmp".
 bool is_our_temporary(const std::string& name) {
   if (!is_temporary_name(name)) return false;
   const std::string target = name.substr(1, name.size() - 5);
-  return is_snapshot_name(target) || is_xdmf_name(target) || target == "diagnostics.csv";
+  return is_snapshot_name(target) || is_xdmf_name(target);
 }
 
 // Names end up in HDF5 paths and XML, so keep them to characters that need no quoting there.
