@@ -45,7 +45,8 @@ std::string source_line(const toml::node& n) {
 void collect_keys(const toml::table& t, const std::string& prefix,
                   std::vector<std::pair<std::string, const toml::node*>>& out) {
   for (const auto& [k, v] : t) {
-    const std::string path = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+    const std::string path =
+        prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
     if (const auto* sub = v.as_table()) {
       collect_keys(*sub, path, out);
     } else if (const auto* arr = v.as_array(); arr && !arr->empty() && arr->is_array_of_tables()) {
@@ -73,7 +74,8 @@ void apply_override(toml::table& root, const std::string& assignment) {
   std::size_t start = 0;
   while (true) {
     const auto dot = key.find('.', start);
-    const std::string part = key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    const std::string part =
+        key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
     if (part.empty()) throw CaseError("--set '" + assignment + "': empty key component");
     if (dot == std::string::npos) {
       t->insert_or_assign(part, *parsed.get("v"));
@@ -99,7 +101,8 @@ CaseFile CaseFile::load(const fs::path& path, const std::vector<std::string>& ov
   if (!fs::exists(path))
     throw CaseError("case file '" + path.string() + "' does not exist: check the path");
   if (fs::is_directory(path))
-    throw CaseError("'" + path.string() + "' is a directory: give the case file (case.toml) itself");
+    throw CaseError("'" + path.string() +
+                    "' is a directory: give the case file (case.toml) itself");
   CaseFile c;
   c.path_ = fs::absolute(path);
   try {
@@ -228,8 +231,8 @@ std::vector<const toml::table*> CaseFile::tables(const std::string& key) const {
 std::vector<double> table_numbers(const toml::table& t, const std::string& key, std::size_t size,
                                   const std::string& context) {
   const auto* arr = t[key].as_array();
-  const std::string msg = "'" + context + "." + key + "' must be an array of " +
-                          std::to_string(size) + " numbers";
+  const std::string msg =
+      "'" + context + "." + key + "' must be an array of " + std::to_string(size) + " numbers";
   if (!arr) throw CaseError(msg + " (missing)");
   if (arr->size() != size) throw CaseError(msg);
   std::vector<double> out;

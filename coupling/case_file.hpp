@@ -1,13 +1,13 @@
 #pragma once
 // TOML case files: loading, `--set key=value` overrides (like `liggghts -var`), and checking every
 // key against the schema so that a misspelt key stops the run with the closest valid name.
+#include <toml++/toml.h>
+
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <toml++/toml.h>
 
 namespace isphdem {
 

@@ -41,7 +41,8 @@ isph::StepStats FluidRun<Dim>::advance() {
 }
 
 template <int Dim>
-void FluidRun<Dim>::run_until(double t, const std::function<void(const isph::StepStats&)>& after_step) {
+void FluidRun<Dim>::run_until(double t,
+                              const std::function<void(const isph::StepStats&)>& after_step) {
   // A relative tolerance keeps round-off from adding one tiny extra step.
   while (solver_.time() < t * (1.0 - 1e-12)) {
     const isph::StepStats s = advance();

@@ -9,16 +9,36 @@ namespace isphdem {
 using isph::Vec;
 
 std::vector<std::string> fluid_scene_keys() {
-  return {"case.dimension",       "case.description",      "domain.min",
-          "domain.max",           "domain.periodic",       "particles.spacing",
-          "particles.smoothing_ratio", "particles.kernel", "fluid.density",
-          "fluid.viscosity",      "fluid.gravity",         "fluid.blocks.min",
-          "fluid.blocks.max",     "walls.layers",          "walls.slip",
-          "walls.boxes.min",      "walls.boxes.max",       "walls.boxes.open",
-          "walls.blocks.min",     "walls.blocks.max",      "initial.velocity",
-          "initial.amplitude",    "solver.alpha_s",        "solver.free_surface",
-          "solver.surface_threshold", "solver.shifting",   "solver.shifting_coefficient",
-          "solver.shifting_max",  "solver.pressure_tolerance", "solver.preconditioner",
+  return {"case.dimension",
+          "case.description",
+          "domain.min",
+          "domain.max",
+          "domain.periodic",
+          "particles.spacing",
+          "particles.smoothing_ratio",
+          "particles.kernel",
+          "fluid.density",
+          "fluid.viscosity",
+          "fluid.gravity",
+          "fluid.blocks.min",
+          "fluid.blocks.max",
+          "walls.layers",
+          "walls.slip",
+          "walls.boxes.min",
+          "walls.boxes.max",
+          "walls.boxes.open",
+          "walls.blocks.min",
+          "walls.blocks.max",
+          "initial.velocity",
+          "initial.amplitude",
+          "solver.alpha_s",
+          "solver.free_surface",
+          "solver.surface_threshold",
+          "solver.shifting",
+          "solver.shifting_coefficient",
+          "solver.shifting_max",
+          "solver.pressure_tolerance",
+          "solver.preconditioner",
           "solver.max_iterations"};
 }
 
@@ -60,7 +80,8 @@ std::array<bool, 2 * Dim> closed_faces(const toml::table& t, const std::string& 
               axes.find(s->at(0)) != std::string::npos &&
               static_cast<int>(axes.find(s->at(0))) < Dim;
     if (!ok)
-      throw CaseError("'" + context + ".open' entries must be faces such as \"y+\" (top) or \"x-\"");
+      throw CaseError("'" + context +
+                      ".open' entries must be faces such as \"y+\" (top) or \"x-\"");
     closed[2 * axes.find(s->at(0)) + (s->at(1) == '+')] = false;
   }
   return closed;
@@ -88,8 +109,10 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
   cfg.viscosity = c.number("fluid.viscosity", 1e-6);
   if (cfg.viscosity < 0) throw CaseError("'fluid.viscosity' must not be negative");
   std::vector<double> g0(D, 0.0);
-  if (Dim == 2) g0[1] = -9.81;
-  else g0[2] = -9.81;
+  if (Dim == 2)
+    g0[1] = -9.81;
+  else
+    g0[2] = -9.81;
   cfg.gravity = to_vec<Dim>(c.numbers("fluid.gravity", D, g0));
 
   s.domain.lo = to_vec<Dim>(c.numbers("domain.min", D));
@@ -115,9 +138,10 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
   int i = 0;
   for (const auto* t : c.tables("walls.blocks")) {
     const std::string ctx = "walls.blocks[" + std::to_string(i++) + "]";
-    Box b{to_vec<Dim>(table_numbers(*t, "min", D, ctx)), to_vec<Dim>(table_numbers(*t, "max", D, ctx))};
+    Box b{to_vec<Dim>(table_numbers(*t, "min", D, ctx)),
+          to_vec<Dim>(table_numbers(*t, "max", D, ctx))};
     check_box<Dim>(b.lo, b.hi, ctx);
-    isph::fill_box<Dim>(s.particles, b.lo, b.hi, dx, isph::kWall);
+    isph::add_wall_block<Dim>(s.particles, b.lo, b.hi, dx);
     wall_blocks.push_back(b);
   }
   const long layers = c.integer("walls.layers", 0);
@@ -133,29 +157,36 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
       if (periodic[a]) closed[2 * a] = closed[2 * a + 1] = false;
     const int nl = static_cast<int>(layers > 0 ? layers : needed);
     if (nl < needed)
-      throw CaseError("'walls.layers' = " + std::to_string(layers) + " is thinner than the kernel support (" +
-                      std::to_string(needed) + " layers needed for smoothing_ratio " +
-                      std::to_string(cfg.smoothing_ratio) + ")");
+      throw CaseError("'walls.layers' = " + std::to_string(layers) +
+                      " is thinner than the kernel support (" + std::to_string(needed) +
+                      " layers needed for smoothing_ratio " + std::to_string(cfg.smoothing_ratio) +
+                      ")");
     isph::add_wall_shell<Dim>(s.particles, lo, hi, dx, nl, closed);
   }
   const std::string slip = c.string("walls.slip", "no_slip");
-  if (slip == "no_slip") cfg.wall = isph::WallSlip::NoSlip;
-  else if (slip == "free_slip") cfg.wall = isph::WallSlip::FreeSlip;
-  else throw CaseError("'walls.slip' must be \"no_slip\" or \"free_slip\" (got \"" + slip + "\")");
+  if (slip == "no_slip")
+    cfg.wall = isph::WallSlip::NoSlip;
+  else if (slip == "free_slip")
+    cfg.wall = isph::WallSlip::FreeSlip;
+  else
+    throw CaseError("'walls.slip' must be \"no_slip\" or \"free_slip\" (got \"" + slip + "\")");
 
   i = 0;
   const auto blocks = c.tables("fluid.blocks");
-  if (blocks.empty()) throw CaseError("the case has no fluid: add a [[fluid.blocks]] table with min and max");
+  if (blocks.empty())
+    throw CaseError("the case has no fluid: add a [[fluid.blocks]] table with min and max");
   for (const auto* t : blocks) {
     const std::string ctx = "fluid.blocks[" + std::to_string(i++) + "]";
     const Vec<Dim> lo = to_vec<Dim>(table_numbers(*t, "min", D, ctx));
     const Vec<Dim> hi = to_vec<Dim>(table_numbers(*t, "max", D, ctx));
     check_box<Dim>(lo, hi, ctx);
-    const std::size_t added = isph::fill_box<Dim>(s.particles, lo, hi, dx, isph::kFluid, [&](const Vec<Dim>& x) {
-      for (const auto& b : wall_blocks)
-        if ((x.array() >= b.lo.array()).all() && (x.array() <= b.hi.array()).all()) return false;
-      return true;
-    });
+    const std::size_t added =
+        isph::fill_box<Dim>(s.particles, lo, hi, dx, isph::kFluid, [&](const Vec<Dim>& x) {
+          for (const auto& b : wall_blocks)
+            if ((x.array() >= b.lo.array()).all() && (x.array() <= b.hi.array()).all())
+              return false;
+          return true;
+        });
     if (added == 0)
       throw CaseError("'" + ctx + "' holds no particle at spacing " + std::to_string(dx) +
                       " m: make the block at least one spacing wide");
@@ -172,10 +203,12 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
       s.particles.v[n].setZero();
       s.particles.v[n][0] = -U * std::cos(k * x[0]) * std::sin(k * x[1]);
       s.particles.v[n][1] = U * std::sin(k * x[0]) * std::cos(k * x[1]);
-      s.particles.p[n] = -0.25 * cfg.density * U * U * (std::cos(2 * k * x[0]) + std::cos(2 * k * x[1]));
+      s.particles.p[n] =
+          -0.25 * cfg.density * U * U * (std::cos(2 * k * x[0]) + std::cos(2 * k * x[1]));
     }
   } else if (init != "rest") {
-    throw CaseError("'initial.velocity' must be \"rest\" or \"taylor_green\" (got \"" + init + "\")");
+    throw CaseError("'initial.velocity' must be \"rest\" or \"taylor_green\" (got \"" + init +
+                    "\")");
   }
 
   cfg.alpha_s = c.number("solver.alpha_s", cfg.alpha_s);
@@ -186,9 +219,12 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
   cfg.shifting.enabled = c.boolean("solver.shifting", cfg.shifting.enabled);
   cfg.shifting.coefficient = c.number("solver.shifting_coefficient", cfg.shifting.coefficient);
   cfg.shifting.max_fraction = c.number("solver.shifting_max", cfg.shifting.max_fraction);
-  cfg.pressure_solver.tolerance = c.positive("solver.pressure_tolerance", cfg.pressure_solver.tolerance);
-  cfg.pressure_solver.preconditioner = c.string("solver.preconditioner", cfg.pressure_solver.preconditioner);
-  if (cfg.pressure_solver.preconditioner != "ilut" && cfg.pressure_solver.preconditioner != "jacobi")
+  cfg.pressure_solver.tolerance =
+      c.positive("solver.pressure_tolerance", cfg.pressure_solver.tolerance);
+  cfg.pressure_solver.preconditioner =
+      c.string("solver.preconditioner", cfg.pressure_solver.preconditioner);
+  if (cfg.pressure_solver.preconditioner != "ilut" &&
+      cfg.pressure_solver.preconditioner != "jacobi")
     throw CaseError("'solver.preconditioner' must be \"ilut\" or \"jacobi\"");
   cfg.pressure_solver.max_iterations =
       static_cast<int>(c.integer("solver.max_iterations", cfg.pressure_solver.max_iterations));

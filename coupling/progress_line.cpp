@@ -11,14 +11,20 @@ namespace isphdem {
 std::string format_duration(double s) {
   char buf[32];
   if (!std::isfinite(s) || s < 0) return "?";
-  if (s < 60) std::snprintf(buf, sizeof buf, "%.1fs", s);
-  else if (s < 3600) std::snprintf(buf, sizeof buf, "%dm%02ds", int(s / 60), int(s) % 60);
-  else std::snprintf(buf, sizeof buf, "%dh%02dm", int(s / 3600), int(s / 60) % 60);
+  if (s < 60)
+    std::snprintf(buf, sizeof buf, "%.1fs", s);
+  else if (s < 3600)
+    std::snprintf(buf, sizeof buf, "%dm%02ds", int(s / 60), int(s) % 60);
+  else
+    std::snprintf(buf, sizeof buf, "%dh%02dm", int(s / 3600), int(s / 60) % 60);
   return buf;
 }
 
 ProgressLine::ProgressLine(double t_end, bool enabled)
-    : t_end_(t_end), enabled_(enabled && isatty(STDERR_FILENO)), start_(omp_get_wtime()), last_draw_(0) {}
+    : t_end_(t_end),
+      enabled_(enabled && isatty(STDERR_FILENO)),
+      start_(omp_get_wtime()),
+      last_draw_(0) {}
 
 ProgressLine::~ProgressLine() { finish(); }
 

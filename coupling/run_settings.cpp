@@ -3,8 +3,8 @@
 namespace isphdem {
 
 std::vector<std::string> run_settings_keys() {
-  return {"time.end",      "time.dt",         "time.max_dt",          "time.cfl",
-          "time.viscous",  "time.force",      "output.interval",      "output.diagnostics_every"};
+  return {"time.end",     "time.dt",    "time.max_dt",     "time.cfl",
+          "time.viscous", "time.force", "output.interval", "output.diagnostics_every"};
 }
 
 RunSettings parse_run_settings(const CaseFile& c) {
@@ -14,7 +14,8 @@ RunSettings parse_run_settings(const CaseFile& c) {
     const auto& n = *c.table().at_path("time.dt").node();
     if (n.is_string()) {
       if (*n.value<std::string>() != "auto")
-        throw CaseError("'time.dt' (" + c.where("time.dt") + ") must be a number of seconds or \"auto\"");
+        throw CaseError("'time.dt' (" + c.where("time.dt") +
+                        ") must be a number of seconds or \"auto\"");
     } else {
       s.fixed_dt = c.positive("time.dt");
     }

@@ -14,8 +14,8 @@ struct RunSettings {
   std::optional<double> fixed_dt;  // time.dt as a number; empty for "auto"
   double max_dt = 1e300;
   isph::TimeStepParams limits;
-  double output_interval = 0.0;   // simulated seconds between snapshots
-  long diagnostics_every = 10;    // steps between diagnostics rows
+  double output_interval = 0.0;  // simulated seconds between snapshots
+  long diagnostics_every = 10;   // steps between diagnostics rows
 };
 
 std::vector<std::string> run_settings_keys();

@@ -46,17 +46,48 @@ std::size_t add_wall_shell(Particles<Dim>& particles, const Vec<Dim>& lo, const 
     if (closed[2 * a + 1]) ehi[a] += layers * dx;
   }
   const double eps = 1e-9 * dx;
-  return fill_box<Dim>(particles, elo, ehi, dx, kWall, [&](const Vec<Dim>& x) {
+  const std::size_t first = particles.size();
+  const std::size_t added = fill_box<Dim>(particles, elo, ehi, dx, kWall, [&](const Vec<Dim>& x) {
     for (int a = 0; a < Dim; ++a)
       if (x[a] < lo[a] - eps || x[a] > hi[a] + eps) return true;
     return false;
   });
+  for (std::size_t i = first; i < particles.size(); ++i) {
+    const Vec<Dim>& x = particles.x[i];
+    const Vec<Dim> q = x.cwiseMax(lo).cwiseMin(hi);  // nearest point of the box
+    const double d = (q - x).norm();
+    particles.wall_distance[i] = d;
+    particles.normal[i] = (q - x) / d;
+  }
+  return added;
+}
+
+template <int Dim>
+std::size_t add_wall_block(Particles<Dim>& particles, const Vec<Dim>& lo, const Vec<Dim>& hi,
+                           double dx) {
+  const std::size_t first = particles.size();
+  const std::size_t added = fill_box<Dim>(particles, lo, hi, dx, kWall);
+  for (std::size_t i = first; i < particles.size(); ++i) {
+    const Vec<Dim>& x = particles.x[i];
+    double best = 1e300;
+    for (int a = 0; a < Dim; ++a)
+      for (int side = 0; side < 2; ++side) {
+        const double d = side ? hi[a] - x[a] : x[a] - lo[a];
+        if (d >= best) continue;
+        best = d;
+        particles.normal[i] = Vec<Dim>::Unit(a) * (side ? 1.0 : -1.0);
+      }
+    particles.wall_distance[i] = best;
+  }
+  return added;
 }
 
 template std::size_t fill_box<2>(Particles<2>&, const Vec<2>&, const Vec<2>&, double, int32_t,
                                  const std::function<bool(const Vec<2>&)>&);
 template std::size_t fill_box<3>(Particles<3>&, const Vec<3>&, const Vec<3>&, double, int32_t,
                                  const std::function<bool(const Vec<3>&)>&);
+template std::size_t add_wall_block<2>(Particles<2>&, const Vec<2>&, const Vec<2>&, double);
+template std::size_t add_wall_block<3>(Particles<3>&, const Vec<3>&, const Vec<3>&, double);
 template std::size_t add_wall_shell<2>(Particles<2>&, const Vec<2>&, const Vec<2>&, double, int,
                                        const std::array<bool, 4>&);
 template std::size_t add_wall_shell<3>(Particles<3>&, const Vec<3>&, const Vec<3>&, double, int,

@@ -19,7 +19,9 @@ struct SolveStats {
 
 struct LinearSolverConfig {
   std::string method = "bicgstab";
-  std::string preconditioner = "ilut";  // "jacobi" or "ilut"
+  // Jacobi: many cheap iterations beat Eigen's ILUT, whose per-step factorisation dominates
+  // (2500-particle Taylor-Green: 20x faster overall). "ilut" stays available.
+  std::string preconditioner = "jacobi";
   double tolerance = 1e-8;
   int max_iterations = 2000;
 };

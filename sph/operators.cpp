@@ -30,7 +30,7 @@ constexpr double kMinRcond = 1e-7;
 
 template <int Dim>
 void compute_operators(const Neighbors<Dim>& nb, double h, double volume,
-                       const std::vector<uint8_t>& active, Operators<Dim>& out) {
+                       const std::vector<uint8_t>& mode, Operators<Dim>& out) {
   constexpr int T = kTerms<Dim>;
   using MatT = Eigen::Matrix<double, T, T>;
   using VecT = Eigen::Matrix<double, T, 1>;
@@ -42,17 +42,18 @@ void compute_operators(const Neighbors<Dim>& nb, double h, double volume,
 
 #pragma omp parallel for schedule(dynamic, 256)
   for (int i = 0; i < n; ++i) {
-    if (!active.empty() && !active[i]) continue;
+    const uint8_t m = mode.empty() ? 2 : mode[i];
+    if (m == 0) continue;
     const int b = nb.begin(i), e = nb.end(i);
     if (e - b < Dim) continue;
 
-    MatT M = MatT::Zero();
-    for (int k = b; k < e; ++k) {
-      const VecT P = basis<Dim>(-nb.rij[k] * inv_h);
-      M.noalias() += nb.w[k] * P * P.transpose();
-    }
     bool quadratic = false;
-    if (e - b >= T) {
+    if (m == 2 && e - b >= T) {
+      MatT M = MatT::Zero();
+      for (int k = b; k < e; ++k) {
+        const VecT P = basis<Dim>(-nb.rij[k] * inv_h);
+        M.noalias() += nb.w[k] * P * P.transpose();
+      }
       Eigen::LLT<MatT> llt(M);
       const MatT Minv = llt.solve(MatT::Identity());
       // Exact 1-norm reciprocal condition number (the inverse is needed anyway).

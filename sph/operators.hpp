@@ -21,12 +21,13 @@ struct Operators {
   std::vector<uint8_t> order;  // per particle: 2 quadratic fit, 1 fallback, 0 no usable neighbours
 };
 
-// Computes operator weights for particles with active[i] != 0 (all when active is empty);
-// inactive particles get zero weights. h scales the fit for conditioning; volume is used by the
-// first-order fallback only.
+// Computes operator weights per particle according to mode[i] (all quadratic when mode is empty):
+// 0 none (zero weights), 1 first-order forms only, 2 quadratic fit where well conditioned. Mode 1
+// serves free-surface particles, whose one-sided support makes the quadratic fit extrapolate
+// wildly. h scales the fit for conditioning; volume is used by the first-order forms only.
 template <int Dim>
 void compute_operators(const Neighbors<Dim>& nb, double h, double volume,
-                       const std::vector<uint8_t>& active, Operators<Dim>& out);
+                       const std::vector<uint8_t>& mode, Operators<Dim>& out);
 
 template <int Dim>
 Vec<Dim> gradient(const Neighbors<Dim>& nb, const Operators<Dim>& op, const std::vector<double>& f,

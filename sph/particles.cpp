@@ -13,6 +13,8 @@ void Particles<Dim>::add(const Vec<Dim>& pos, const Vec<Dim>& vel, int32_t k) {
   kind.push_back(k);
   id.push_back(next_id++);
   surface.push_back(0);
+  normal.push_back(Vec<Dim>::Zero());
+  wall_distance.push_back(0.0);
 }
 
 template <int Dim>

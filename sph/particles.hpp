@@ -20,6 +20,10 @@ struct Particles {
   std::vector<int32_t> kind;     // Kind
   std::vector<int64_t> id;       // stable identity across re-sorting
   std::vector<uint8_t> surface;  // 1 where the free-surface condition p = 0 applies
+  // Wall and solid particles: unit normal of the nearest wall surface pointing into the fluid,
+  // and the distance to that surface (zero normal: unknown, the plain Adami mirror is used).
+  std::vector<Vec<Dim>> normal;
+  std::vector<double> wall_distance;
 
   double volume = 0.0;   // particle volume dx^Dim (uniform spacing)
   double spacing = 0.0;  // dx
@@ -44,6 +48,8 @@ struct Particles {
     f(kind);
     f(id);
     f(surface);
+    f(normal);
+    f(wall_distance);
   }
 };
 

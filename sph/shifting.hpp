@@ -11,7 +11,8 @@ namespace isph {
 
 struct ShiftingParams {
   bool enabled = true;
-  double coefficient = 4.0;   // A in D = A h |u| dt (Skillen et al. 2013: 1-6; 4 tuned on Taylor-Green)
+  double coefficient =
+      4.0;  // A in D = A h |u| dt (Skillen et al. 2013: 1-6; 4 tuned on Taylor-Green)
   double max_fraction = 0.2;  // |dr| <= max_fraction * dx
   double tensile_r = 0.2;     // anti-clumping term R (W_ij / W(dx))^4
 };

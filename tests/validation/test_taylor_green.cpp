@@ -42,8 +42,9 @@ TaylorGreenResult run_taylor_green(double dx, double t_end) {
 TEST(TaylorGreen, AmplitudeDecayWithinTwoPercentAndConverges) {
   const TaylorGreenResult coarse = run_taylor_green(1.0 / 25, 1.0);
   const TaylorGreenResult fine = run_taylor_green(1.0 / 50, 1.0);
-  std::printf("max relative amplitude error to t = 1: dx=1/25 %.3e, dx=1/50 %.3e; observed order %.2f\n",
-              coarse.max_error, fine.max_error, std::log2(coarse.max_error / fine.max_error));
+  std::printf(
+      "max relative amplitude error to t = 1: dx=1/25 %.3e, dx=1/50 %.3e; observed order %.2f\n",
+      coarse.max_error, fine.max_error, std::log2(coarse.max_error / fine.max_error));
   EXPECT_LT(fine.max_error, 0.02);
   EXPECT_LT(fine.max_error, coarse.max_error);
   EXPECT_NEAR(fine.final_amplitude, 0.454, 0.02 * 0.454);

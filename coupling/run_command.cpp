@@ -1,0 +1,187 @@
+#include "run_command.hpp"
+
+#include <omp.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "case_file.hpp"
+#include "diagnostics_writer.hpp"
+#include "fluid_run.hpp"
+#include "fluid_scene.hpp"
+#include "fluid_snapshot.hpp"
+#include "progress_line.hpp"
+#include "run_settings.hpp"
+#include "snapshot_writer.hpp"
+
+namespace isphdem {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* kUsage =
+    "usage: isphdem run CASE.toml --out DIR [--set key=value ...] [--quiet]\n"
+    "  --out DIR        output directory (snap_<step>.h5, fluid.xdmf, diagnostics.csv);\n"
+    "                   results of an earlier run there are replaced\n"
+    "  --set key=value  override a case key, e.g. --set time.end=0.2 (repeatable)\n"
+    "  --quiet          no progress line and no summary\n";
+
+struct Arguments {
+  fs::path case_file;
+  fs::path out;
+  std::vector<std::string> overrides;
+  bool quiet = false;
+};
+
+Arguments parse_arguments(int argc, char** argv) {
+  Arguments a;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&](const char* what) -> std::string {
+      if (i + 1 >= argc) throw CaseError(std::string(what) + " needs a value\n" + kUsage);
+      return argv[++i];
+    };
+    if (arg == "--out")
+      a.out = value("--out");
+    else if (arg == "--set")
+      a.overrides.push_back(value("--set"));
+    else if (arg.rfind("--set=", 0) == 0)
+      a.overrides.push_back(arg.substr(6));
+    else if (arg == "--quiet")
+      a.quiet = true;
+    else if (arg.rfind("-", 0) == 0)
+      throw CaseError("unknown option '" + arg + "'\n" + kUsage);
+    else if (a.case_file.empty())
+      a.case_file = arg;
+    else
+      throw CaseError("more than one case file given ('" + a.case_file.string() + "', '" + arg +
+                      "')");
+  }
+  if (a.case_file.empty()) throw CaseError(std::string("no case file given\n") + kUsage);
+  if (a.out.empty())
+    throw CaseError(std::string("no output directory given (--out DIR)\n") + kUsage);
+  return a;
+}
+
+std::vector<std::string> known_keys() {
+  auto k = fluid_scene_keys();
+  const auto r = run_settings_keys();
+  k.insert(k.end(), r.begin(), r.end());
+  return k;
+}
+
+template <int Dim>
+int run_case(const CaseFile& c, const Arguments& args) {
+  const RunSettings settings = parse_run_settings(c);
+  FluidRun<Dim> run(build_fluid_scene<Dim>(c), settings);
+  auto& solver = run.solver();
+  const auto& P = solver.particles();
+
+  if (!args.quiet) {
+    const auto l = solver.limits();
+    std::printf("isphdem run: %s (%dD)\n  particles: %zu fluid, %zu wall; dx = %g m, h = %g m\n",
+                c.path().string().c_str(), Dim, P.count(isph::kFluid), P.count(isph::kWall),
+                P.spacing, solver.kernel().h());
+    if (settings.fixed_dt)
+      std::printf("  time step: fixed %g s (stable limit now %g s, %s)\n", *settings.fixed_dt,
+                  l.min(), l.limiting().c_str());
+    else
+      std::printf("  time step: auto, now %g s (%s limit; CFL %g, viscous %g, force %g s)\n",
+                  run.next_dt(), l.limiting().c_str(), l.cfl, l.viscous, l.force);
+    std::printf("  output: %s every %g s to t = %g s\n", args.out.string().c_str(),
+                settings.output_interval, settings.t_end);
+    std::fflush(stdout);
+  }
+
+  SnapshotWriter writer(args.out);
+  // The case as run, overrides applied, next to the results.
+  {
+    std::ofstream f(args.out / "case_used.toml");
+    f << "# " << c.path().string() << " with the overrides of this run\n" << c.table() << "\n";
+  }
+  DiagnosticsWriter diagnostics(args.out / "diagnostics.csv",
+                                {"time", "step", "wall_seconds", "ppe_iterations", "max_speed",
+                                 "dt", "ppe_residual", "surface_particles", "kinetic_energy"});
+  auto snapshot = [&]() {
+    Snapshot s;
+    s.step = solver.steps();
+    s.time = solver.time();
+    add_fluid_group(solver.particles(), s);
+    writer.write(s);
+  };
+
+  const double start = omp_get_wtime();
+  ProgressLine progress(settings.t_end, !args.quiet);
+  snapshot();
+  double next_output = settings.output_interval;
+  long ppe_total = 0;
+  try {
+    run.run_until(settings.t_end, [&](const isph::StepStats& st) {
+      ppe_total += st.ppe_iterations;
+      const long step = solver.steps();
+      if (step % settings.diagnostics_every == 0) {
+        double ke = 0.0;
+        for (std::size_t i = 0; i < P.size(); ++i)
+          if (P.kind[i] != isph::kWall)
+            ke += 0.5 * solver.config().density * P.volume * P.v[i].squaredNorm();
+        diagnostics.row({solver.time(), double(step), omp_get_wtime() - start,
+                         double(st.ppe_iterations), st.max_speed, st.dt, st.ppe_residual,
+                         double(st.surface_particles), ke});
+      }
+      if (solver.time() >= next_output * (1.0 - 1e-9)) {
+        snapshot();
+        while (next_output <= solver.time() * (1.0 + 1e-9)) next_output += settings.output_interval;
+      }
+      progress.update(solver.time(), step);
+    });
+  } catch (const isph::SimulationError& e) {
+    progress.finish();
+    std::fprintf(stderr,
+                 "isphdem run: stopped at t = %g s, step %ld: %s\n"
+                 "  output written so far in %s is complete and valid.\n",
+                 solver.time(), solver.steps(), e.what(), args.out.string().c_str());
+    return 1;
+  }
+  if (std::abs(solver.time() - (next_output - settings.output_interval)) > 1e-12) snapshot();
+  progress.finish();
+
+  if (!args.quiet) {
+    const double wall = omp_get_wtime() - start;
+    const auto& t = solver.timings();
+    const long steps = solver.steps();
+    std::printf(
+        "done: t = %g s in %ld steps, %s wall, %.3g particle-steps/s, %.1f PPE iterations/step\n",
+        solver.time(), steps, format_duration(wall).c_str(), double(P.size()) * steps / wall,
+        steps ? double(ppe_total) / steps : 0.0);
+    std::printf(
+        "  time per part: neighbours %.0f%%, operators %.0f%%, assembly %.0f%%, solve %.0f%%, "
+        "rest %.0f%%\n",
+        100 * t.neighbors / t.total(), 100 * t.operators / t.total(), 100 * t.assembly / t.total(),
+        100 * t.solve / t.total(), 100 * t.rest / t.total());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int run_main(int argc, char** argv) {
+  Arguments args;
+  try {
+    args = parse_arguments(argc, argv);
+    const CaseFile c = CaseFile::load(args.case_file, args.overrides, known_keys());
+    return case_dimension(c) == 2 ? run_case<2>(c, args) : run_case<3>(c, args);
+  } catch (const CaseError& e) {
+    std::fprintf(stderr, "isphdem run: %s\n", e.what());
+    return 2;
+  } catch (const isph::SimulationError& e) {
+    std::fprintf(stderr, "isphdem run: %s\n", e.what());
+    return 2;
+  }
+}
+
+}  // namespace isphdem

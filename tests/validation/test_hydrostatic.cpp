@@ -1,0 +1,89 @@
+// Hydrostatic tank: p = rho g (H - y) within 1% away from the free surface, and no drift of the
+// pressure or of particle positions over 10^4 steps.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "case_path.hpp"
+#include "fluid_run.hpp"
+
+namespace isphdem::validation {
+namespace {
+
+struct HydrostaticState {
+  double max_rel_error = 0;  // over particles at least 3 spacings below the surface
+  double bottom_pressure = 0;
+  double surface_height = 0;
+};
+
+HydrostaticState measure(const isph::IsphSolver<2>& s) {
+  const auto& P = s.particles();
+  const double rho = s.config().density, g = -s.config().gravity[1];
+  HydrostaticState m;
+  // Surface height: the top of the top particle row (each particle holds one spacing).
+  double ytop = -1e9;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.kind[i] == isph::kFluid) ytop = std::max(ytop, P.x[i][1]);
+  m.surface_height = ytop + 0.5 * P.spacing;
+  double bottom_sum = 0;
+  int bottom_n = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != isph::kFluid) continue;
+    // The p = 0 condition sits on the top row, half a spacing below the geometric surface.
+    const double depth = ytop - P.x[i][1];
+    if (depth >= 3 * P.spacing) {
+      const double exact = rho * g * depth;
+      m.max_rel_error = std::max(m.max_rel_error, std::abs(P.p[i] - exact) / exact);
+    }
+    if (P.x[i][1] < P.spacing) {
+      bottom_sum += P.p[i];
+      ++bottom_n;
+    }
+  }
+  m.bottom_pressure = bottom_sum / bottom_n;
+  return m;
+}
+
+TEST(Hydrostatic, PressureExactAndNoDriftOver10000Steps) {
+  // Reduced resolution (20 x 20 fluid particles) so that 10^4 steps fit the default suite.
+  const CaseFile c = load_example("hydrostatic_2d", {"particles.spacing=0.01", "time.end=5.0"});
+  FluidRun<2> run(build_fluid_scene<2>(c), parse_run_settings(c));
+  auto& s = run.solver();
+  std::map<int64_t, isph::Vec<2>> x0;
+  for (std::size_t i = 0; i < s.particles().size(); ++i)
+    x0[s.particles().id[i]] = s.particles().x[i];
+
+  run.advance();
+  const HydrostaticState first = measure(s);
+  std::printf(
+      "  step     t[s]   max rel err   bottom p [Pa]   surface [m]   max displacement/dx\n");
+  double worst_error = 0, worst_disp = 0;
+  HydrostaticState last;
+  for (int k = 1; k <= 10; ++k) {
+    while (s.steps() < 1000 * k) run.advance();
+    last = measure(s);
+    double disp = 0;
+    for (std::size_t i = 0; i < s.particles().size(); ++i)
+      disp = std::max(
+          disp, (s.particles().x[i] - x0[s.particles().id[i]]).norm() / s.particles().spacing);
+    worst_error = std::max(worst_error, last.max_rel_error);
+    worst_disp = std::max(worst_disp, disp);
+    std::printf("  %5ld  %7.3f   %.3e     %9.3f       %.6f      %.2e\n", s.steps(), s.time(),
+                last.max_rel_error, last.bottom_pressure, last.surface_height, disp);
+  }
+  const double drift =
+      std::abs(last.bottom_pressure - first.bottom_pressure) / first.bottom_pressure;
+  std::printf(
+      "max relative pressure error %.3e; bottom-pressure drift %.3e; max displacement %.3e dx; "
+      "surface change %.3e m\n",
+      worst_error, drift, worst_disp, last.surface_height - first.surface_height);
+  EXPECT_EQ(s.steps(), 10000);
+  EXPECT_LT(worst_error, 0.01);
+  EXPECT_LT(drift, 0.005);
+  EXPECT_LT(worst_disp, 0.1);
+  EXPECT_LT(std::abs(last.surface_height - first.surface_height), 0.01 * first.surface_height);
+}
+
+}  // namespace
+}  // namespace isphdem::validation
