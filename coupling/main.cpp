@@ -1,6 +1,7 @@
 // isphdem: command-line front end. Subcommands:
 //   isphdem run CASE.toml --out DIR [--set key=value ...]   coupled or fluid-only case
-//   isphdem dem SCRIPT [liggghts options]                   plain LIGGGHTS script, fix couple/isph available
+//   isphdem dem SCRIPT [liggghts options]                   plain LIGGGHTS script, fix couple/isph
+//   available
 // MPI is initialised here once for every subcommand (LIGGGHTS needs it; fluid-only runs are a
 // singleton job), so subcommands must neither initialise nor finalise it.
 #include <mpi.h>
@@ -10,6 +11,7 @@
 #include <exception>
 #include <string>
 
+#include "dem_command.hpp"
 #include "run_command.hpp"
 
 namespace {
@@ -22,6 +24,8 @@ struct Subcommand {
 
 const Subcommand kSubcommands[] = {
     {"run", isphdem::run_main, "isphdem run CASE.toml --out DIR [--set key=value ...]"},
+    {"dem", isphdem::dem_main,
+     "isphdem dem SCRIPT [-var NAME VALUE ...] [-log FILE] [-screen FILE]"},
 };
 
 void print_usage(std::FILE* to) {
