@@ -1,7 +1,6 @@
 // isphdem: command-line front end. Subcommands:
 //   isphdem run CASE.toml --out DIR [--set key=value ...]   coupled or fluid-only case
-//   isphdem dem SCRIPT [liggghts options]                   plain LIGGGHTS script, fix couple/isph
-//   available
+//   isphdem dem SCRIPT [liggghts options]                   plain LIGGGHTS script, fix couple/isph available
 // MPI is initialised here once for every subcommand (LIGGGHTS needs it; fluid-only runs are a
 // singleton job), so subcommands must neither initialise nor finalise it.
 #include <mpi.h>
