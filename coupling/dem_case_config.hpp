@@ -24,7 +24,7 @@ namespace isphdem {
 struct DemCaseConfig {
   std::filesystem::path script;  // resolved against the case directory
   int substeps = 1;
-  std::vector<std::pair<std::string, std::string>> variables;  // in file order
+  std::vector<std::pair<std::string, std::string>> variables;  // sorted by name
   std::optional<std::string> log, screen;                      // as written
 
   // liggghts command-line options for this case: -var ..., -log, -screen. Relative log and

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -56,6 +57,9 @@ FixCoupleIsph::FixCoupleIsph(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg,
   }
 
   create_attribute = 1;  // new (inserted) atoms start with zero load
+  // Existing atoms are zeroed below; without this the first run's setup would zero them again
+  // and drop loads set between the fix's creation and that run.
+  just_created = 0;
   peratom_flag = 1;
   size_peratom_cols = kLoadCols;
   peratom_freq = 1;
@@ -302,19 +306,26 @@ void FixCoupleIsph::apply_planar_to_velocities(bool snap_positions) {
   }
 }
 
-void FixCoupleIsph::apply_planar_to_bodies(bool first) {
+void FixCoupleIsph::apply_planar_to_bodies(bool collective) {
   if (!ms_) return;
   const int bad_tag = planar::constrain_bodies(ms_->data(), normal_, plane_coord_);
-  if (!first) return;
-  // A tilted clump would be turned out of plane by any in-plane torque: refuse it up front.
-  int worst = bad_tag < 0 ? INT_MAX : bad_tag, first_bad = 0;
-  MPI_Allreduce(&worst, &first_bad, 1, MPI_INT, MPI_MIN, world);
-  if (first_bad != INT_MAX) {
-    std::string msg = "planar: multisphere body " + std::to_string(first_bad) +
-                      " has no principal axis along the slab normal (its spheres do not lie in "
-                      "one plane parallel to the slab); use a planar clump template and insert "
-                      "with 'orientation template'";
-    error->fix_error(FLERR, this, msg.c_str());
+  // A tilted clump would be turned out of plane by any in-plane torque: refuse it.
+  auto message = [&](int tag) {
+    return "planar: multisphere body " + std::to_string(tag) +
+           " has no principal axis along the slab normal (its spheres do not lie in one plane "
+           "parallel to the slab, or its inertia tensor from Monte Carlo is not exact); give the "
+           "template 'mass ... inertia_tensor ...' with zero out-of-plane products and insert "
+           "with 'orientation template'";
+  };
+  if (collective) {
+    int mine = bad_tag < 0 ? INT_MAX : bad_tag, first_bad = INT_MAX;
+    MPI_Allreduce(&mine, &first_bad, 1, MPI_INT, MPI_MIN, world);
+    if (first_bad != INT_MAX) error->fix_error(FLERR, this, message(first_bad).c_str());
+  } else if (bad_tag >= 0) {
+    // Mid-run (a body inserted during the run): no collective call is possible here.
+    const std::string msg = std::string("Fix couple/isph (id ") + id + "): " + message(bad_tag);
+    std::fprintf(stderr, "ERROR: %s\n", msg.c_str());
+    error->one(FLERR, msg.c_str());
   }
 }
 

@@ -64,7 +64,7 @@ class FixCoupleIsph : public Fix {
   void add_to_body(int body_tag, const double* df, const double* dt, const double* x_unwrapped);
   void apply_planar_to_forces();
   void apply_planar_to_velocities(bool snap_positions);
-  void apply_planar_to_bodies(bool first);
+  void apply_planar_to_bodies(bool collective);
 
   double** hload_ = nullptr;  // per-atom force xyz + torque xyz; migrates with the atom
 
