@@ -118,8 +118,18 @@ CaseFile CaseFile::load(const fs::path& path, const std::vector<std::string>& ov
 
   std::vector<std::pair<std::string, const toml::node*>> keys;
   collect_keys(c.table_, "", keys);
+  // A known key ending in ".*" admits any key below it (free-form tables such as dem.variables).
+  auto known = [&](const std::string& k) {
+    for (const auto& pattern : known_keys) {
+      if (pattern == k) return true;
+      if (pattern.size() > 2 && pattern.compare(pattern.size() - 2, 2, ".*") == 0 &&
+          k.compare(0, pattern.size() - 1, pattern, 0, pattern.size() - 1) == 0)
+        return true;
+    }
+    return false;
+  };
   for (const auto& [k, node] : keys) {
-    if (std::find(known_keys.begin(), known_keys.end(), k) != known_keys.end()) continue;
+    if (known(k)) continue;
     throw CaseError("unknown key '" + k + "' (" + source_line(*node) + "); did you mean '" +
                     closest(k, known_keys) + "'?");
   }

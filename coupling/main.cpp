@@ -11,6 +11,7 @@
 #include <exception>
 #include <string>
 
+#include "dem_command.hpp"
 #include "run_command.hpp"
 
 namespace {
@@ -23,6 +24,8 @@ struct Subcommand {
 
 const Subcommand kSubcommands[] = {
     {"run", isphdem::run_main, "isphdem run CASE.toml --out DIR [--set key=value ...]"},
+    {"dem", isphdem::dem_main,
+     "isphdem dem SCRIPT [-var NAME VALUE ...] [-log FILE] [-screen FILE]"},
 };
 
 void print_usage(std::FILE* to) {

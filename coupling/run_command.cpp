@@ -1,5 +1,6 @@
 #include "run_command.hpp"
 
+#include <mpi.h>
 #include <omp.h>
 
 #include <cmath>
@@ -10,6 +11,9 @@
 #include <vector>
 
 #include "case_file.hpp"
+#include "dem_case_config.hpp"
+#include "dem_run_case.hpp"
+#include "dem_snapshot.hpp"
 #include "diagnostics_writer.hpp"
 #include "fluid_run.hpp"
 #include "fluid_scene.hpp"
@@ -72,7 +76,77 @@ std::vector<std::string> known_keys() {
   auto k = fluid_scene_keys();
   const auto r = run_settings_keys();
   k.insert(k.end(), r.begin(), r.end());
+  for (const auto& d : dem_table_keys()) k.push_back("dem." + d + (d == "variables" ? ".*" : ""));
   return k;
+}
+
+// A case with [dem] and no fluid: the grains advance in chunks of dem.substeps, exactly as they
+// will between fluid steps of a coupled case. Output goes through rank 0.
+int run_dem_only(const CaseFile& c, const Arguments& args) {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  const auto* table = c.table()["dem"].as_table();
+  if (!table) throw CaseError("'dem' must be a table: [dem] with script and substeps");
+  DemCaseConfig dem;
+  try {
+    dem = parse_dem_table(*table, c.directory());
+  } catch (const std::runtime_error& e) {
+    throw CaseError(e.what());
+  }
+  const RunSettings settings = parse_run_settings(c);
+  std::unique_ptr<SnapshotWriter> writer;
+  std::unique_ptr<DiagnosticsWriter> diagnostics;
+  if (rank == 0) {
+    writer = std::make_unique<SnapshotWriter>(args.out);
+    diagnostics = std::make_unique<DiagnosticsWriter>(
+        args.out / "diagnostics.csv",
+        std::vector<std::string>{"time", "step", "wall_seconds", "ppe_iterations", "max_speed",
+                                 "atoms", "bodies"});
+    if (!args.quiet)
+      std::printf("isphdem run: %s (DEM only: %s, %d substeps per chunk) to t = %g s\n",
+                  c.path().string().c_str(), dem.script.string().c_str(), dem.substeps,
+                  settings.t_end);
+  }
+  const double start = omp_get_wtime();
+  double next_output = 0.0;
+  ProgressLine progress(settings.t_end, !args.quiet && rank == 0);
+  DemRunOptions options;
+  options.out_dir = args.out;
+  options.fluid_dt = settings.fixed_dt;
+  options.after_chunk = [&](DemBackend& backend, long chunk) {
+    const double t = chunk * dem.substeps * backend.timestep();
+    const bool last = t >= settings.t_end * (1.0 - 1e-12);
+    if (t < next_output * (1.0 - 1e-9) && !last) {
+      if (rank == 0) progress.update(t, chunk);
+      return;
+    }
+    const DemState state = backend.state();  // collective
+    while (next_output <= t * (1.0 + 1e-9)) next_output += settings.output_interval;
+    if (rank != 0) return;
+    Snapshot snap;
+    snap.step = state.step;
+    snap.time = t;
+    add_dem_groups(state, HydroLoads{}, snap);
+    writer->write(snap);
+    double vmax = 0.0;
+    for (const auto& a : state.atoms)
+      vmax = std::max(vmax, std::sqrt(a.v[0] * a.v[0] + a.v[1] * a.v[1] + a.v[2] * a.v[2]));
+    diagnostics->row({t, double(state.step), omp_get_wtime() - start, 0.0, vmax,
+                      double(state.atoms.size()), double(state.bodies.size())});
+    progress.update(t, chunk);
+  };
+  int rc = 0;
+  try {
+    rc = run_dem_case(dem, settings.t_end, options);
+  } catch (const std::runtime_error& e) {
+    progress.finish();
+    throw CaseError(e.what());
+  }
+  progress.finish();
+  if (rank == 0 && !args.quiet)
+    std::printf("done: DEM-only run in %s wall\n",
+                format_duration(omp_get_wtime() - start).c_str());
+  return rc;
 }
 
 template <int Dim>
@@ -174,6 +248,12 @@ int run_main(int argc, char** argv) {
   try {
     args = parse_arguments(argc, argv);
     const CaseFile c = CaseFile::load(args.case_file, args.overrides, known_keys());
+    const bool has_dem = c.has("dem"), has_fluid = c.has("fluid");
+    if (has_dem && has_fluid)
+      throw CaseError(
+          "this version runs fluid-only or DEM-only cases; coupling a fluid with [dem] "
+          "grains comes with the unresolved-coupling work: remove [dem] or [fluid]");
+    if (has_dem) return run_dem_only(c, args);
     return case_dimension(c) == 2 ? run_case<2>(c, args) : run_case<3>(c, args);
   } catch (const CaseError& e) {
     std::fprintf(stderr, "isphdem run: %s\n", e.what());

@@ -1,0 +1,12 @@
+// GoogleTest main for tests that start LIGGGHTS: MPI must be up before LAMMPS is constructed
+// (the driver's main does the same for `isphdem`).
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+int main(int argc, char** argv) {
+  MPI_Init(&argc, &argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  const int rc = RUN_ALL_TESTS();
+  MPI_Finalize();
+  return rc;
+}
