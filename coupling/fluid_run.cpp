@@ -1,6 +1,7 @@
 #include "fluid_run.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace isphdem {
@@ -45,7 +46,14 @@ void FluidRun<Dim>::run_until(double t,
                               const std::function<void(const isph::StepStats&)>& after_step) {
   // A relative tolerance keeps round-off from adding one tiny extra step.
   while (solver_.time() < t * (1.0 - 1e-12)) {
-    const isph::StepStats s = advance();
+    double dt = next_dt();
+    if (!settings_.fixed_dt) {
+      // Land exactly on t with equal steps rather than one short last step: the stabilised PPE's
+      // density term scales as 1/dt^2, so a sliver of a step would kick the pressure.
+      const double rest = t - solver_.time();
+      dt = rest / std::ceil(rest / dt - 1e-9);
+    }
+    const isph::StepStats s = solver_.step(dt);
     if (after_step) after_step(s);
   }
 }

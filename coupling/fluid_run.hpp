@@ -16,7 +16,8 @@ class FluidRun {
 
   double next_dt() const;
   isph::StepStats advance();
-  // Steps until time t (the last step may overshoot by less than one dt).
+  // Steps until time t: exactly onto t with an automatic dt (steps evened out), or with the fixed
+  // dt until t is reached or passed by less than one step.
   void run_until(double t, const std::function<void(const isph::StepStats&)>& after_step = {});
 
   isph::IsphSolver<Dim>& solver() { return solver_; }

@@ -192,27 +192,27 @@ int run_case(const CaseFile& c, const Arguments& args) {
   const double start = omp_get_wtime();
   ProgressLine progress(settings.t_end, !args.quiet);
   snapshot();
-  double next_output = settings.output_interval;
   long ppe_total = 0;
+  auto after_step = [&](const isph::StepStats& st) {
+    ppe_total += st.ppe_iterations;
+    const long step = solver.steps();
+    if (step % settings.diagnostics_every == 0) {
+      double ke = 0.0;
+      for (std::size_t i = 0; i < P.size(); ++i)
+        if (P.kind[i] != isph::kWall)
+          ke += 0.5 * solver.config().density * P.volume * P.v[i].squaredNorm();
+      diagnostics.row({solver.time(), double(step), omp_get_wtime() - start,
+                       double(st.ppe_iterations), st.max_speed, st.dt, st.ppe_residual,
+                       double(st.surface_particles), ke});
+    }
+    progress.update(solver.time(), step);
+  };
   try {
-    run.run_until(settings.t_end, [&](const isph::StepStats& st) {
-      ppe_total += st.ppe_iterations;
-      const long step = solver.steps();
-      if (step % settings.diagnostics_every == 0) {
-        double ke = 0.0;
-        for (std::size_t i = 0; i < P.size(); ++i)
-          if (P.kind[i] != isph::kWall)
-            ke += 0.5 * solver.config().density * P.volume * P.v[i].squaredNorm();
-        diagnostics.row({solver.time(), double(step), omp_get_wtime() - start,
-                         double(st.ppe_iterations), st.max_speed, st.dt, st.ppe_residual,
-                         double(st.surface_particles), ke});
-      }
-      if (solver.time() >= next_output * (1.0 - 1e-9)) {
-        snapshot();
-        while (next_output <= solver.time() * (1.0 + 1e-9)) next_output += settings.output_interval;
-      }
-      progress.update(solver.time(), step);
-    });
+    // Each output time is a landing point of the run, so snapshots fall on t = k * interval.
+    for (long k = 1; solver.time() < settings.t_end * (1.0 - 1e-12); ++k) {
+      run.run_until(std::min(k * settings.output_interval, settings.t_end), after_step);
+      snapshot();
+    }
   } catch (const isph::SimulationError& e) {
     progress.finish();
     std::fprintf(stderr,
@@ -221,7 +221,6 @@ int run_case(const CaseFile& c, const Arguments& args) {
                  solver.time(), solver.steps(), e.what(), args.out.string().c_str());
     return 1;
   }
-  if (std::abs(solver.time() - (next_output - settings.output_interval)) > 1e-12) snapshot();
   progress.finish();
 
   if (!args.quiet) {

@@ -55,8 +55,10 @@ IsphSolver<Dim>::IsphSolver(const IsphConfig<Dim>& config, const Domain<Dim>& do
   if (particles_.size() == 0) throw SimulationError("the case creates no particles");
   if (!(config.density > 0.0)) throw SimulationError("fluid.density must be positive");
   if (config.viscosity < 0.0) throw SimulationError("fluid.viscosity must not be negative");
+  // Periodic axes too: a block sticking out of a periodic box would wrap onto other particles.
   for (std::size_t i = 0; i < particles_.size(); ++i)
-    if (!domain_.contains(particles_.x[i]))
+    if (((particles_.x[i] - domain_.lo).array() < 0.0).any() ||
+        ((particles_.x[i] - domain_.hi).array() > 0.0).any())
       throw SimulationError("particle " + std::to_string(particles_.id[i]) + " at " +
                             fmt<Dim>(particles_.x[i]) +
                             " starts outside the domain box: enlarge domain.min/domain.max");

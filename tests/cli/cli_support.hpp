@@ -1,0 +1,54 @@
+#pragma once
+// Runs `isphdem run` the way a user does and captures what it prints.
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace isphdem::cli {
+
+struct Result {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr together
+};
+
+inline Result run(const std::string& args) {
+  const std::string cmd =
+      std::string(ISPHDEM_BINARY_DIR) + "/coupling/isphdem run " + args + " 2>&1";
+  Result r;
+  FILE* p = popen(cmd.c_str(), "r");
+  std::array<char, 4096> buf;
+  while (std::fgets(buf.data(), buf.size(), p)) r.output += buf.data();
+  const int status = pclose(p);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+// A fresh scratch directory per test.
+inline std::filesystem::path scratch(const std::string& name) {
+  const auto d = std::filesystem::path(ISPHDEM_BINARY_DIR) / "test_output" / "cli" / name;
+  std::filesystem::remove_all(d);
+  std::filesystem::create_directories(d);
+  return d;
+}
+
+inline void write_file(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream(p) << text;
+}
+
+inline std::string example(const std::string& name) {
+  return std::string(ISPHDEM_SOURCE_DIR) + "/examples/" + name + "/case.toml";
+}
+
+inline int count_snapshots(const std::filesystem::path& dir) {
+  int n = 0;
+  if (!std::filesystem::exists(dir)) return 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    n += e.path().filename().string().rfind("snap_", 0) == 0;
+  return n;
+}
+
+}  // namespace isphdem::cli

@@ -1,0 +1,129 @@
+// Bad input stops `isphdem run` before any output is touched, with a message that names the
+// cause (the key, the file, the line) and the fix, and a non-zero exit code.
+#include <gtest/gtest.h>
+
+#include "cli_support.hpp"
+
+namespace isphdem::cli {
+namespace {
+
+const char* kGoodCase = R"(
+[case]
+dimension = 2
+[domain]
+min = [0.0, 0.0]
+max = [1.0, 1.0]
+periodic = [true, true]
+[particles]
+spacing = 0.05
+[fluid]
+viscosity = 0.01
+gravity = [0.0, 0.0]
+[[fluid.blocks]]
+min = [0.0, 0.0]
+max = [1.0, 1.0]
+[initial]
+velocity = "taylor_green"
+[solver]
+free_surface = false
+[time]
+end = 0.05
+[output]
+interval = 0.01
+)";
+
+// Runs a bad case into a directory that already holds a previous run's valid output, and checks
+// that the failure left that output exactly as it was.
+Result run_bad_case(const std::string& name, const std::string& case_text,
+                    const std::string& extra = "") {
+  const auto dir = scratch(name);
+  write_file(dir / "good.toml", kGoodCase);
+  const Result good =
+      run((dir / "good.toml").string() + " --out " + (dir / "out").string() + " --quiet");
+  EXPECT_EQ(good.exit_code, 0) << good.output;
+  const int snaps_before = count_snapshots(dir / "out");
+  EXPECT_GT(snaps_before, 0);
+  const auto xdmf_time = std::filesystem::last_write_time(dir / "out" / "fluid.xdmf");
+
+  write_file(dir / "bad.toml", case_text);
+  const Result bad =
+      run((dir / "bad.toml").string() + " --out " + (dir / "out").string() + " " + extra);
+  EXPECT_NE(bad.exit_code, 0) << bad.output;
+  EXPECT_EQ(count_snapshots(dir / "out"), snaps_before) << "bad input touched earlier output";
+  EXPECT_EQ(std::filesystem::last_write_time(dir / "out" / "fluid.xdmf"), xdmf_time);
+  std::printf("%s: exit %d: %s", name.c_str(), bad.exit_code, bad.output.c_str());
+  return bad;
+}
+
+std::string with(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return text.replace(at, from.size(), to);
+}
+
+TEST(BadInput, MalformedTomlNamesTheLine) {
+  const Result r = run_bad_case("malformed", with(kGoodCase, "[domain]", "[domain"));
+  EXPECT_NE(r.output.find("malformed case file"), std::string::npos);
+  EXPECT_NE(r.output.find("line 4"), std::string::npos);  // the text starts with a newline
+}
+
+TEST(BadInput, MisspeltKeySuggestsTheClosest) {
+  const Result r = run_bad_case("misspelt", with(kGoodCase, "spacing = 0.05", "spaceing = 0.05"));
+  EXPECT_NE(r.output.find("unknown key 'particles.spaceing'"), std::string::npos);
+  EXPECT_NE(r.output.find("did you mean 'particles.spacing'"), std::string::npos);
+}
+
+TEST(BadInput, MisspeltOverrideSuggestsTheClosest) {
+  const Result r = run_bad_case("misspelt_set", kGoodCase, "--set time.ned=1");
+  EXPECT_NE(r.output.find("unknown key 'time.ned' (--set)"), std::string::npos);
+  EXPECT_NE(r.output.find("did you mean 'time.end'"), std::string::npos);
+}
+
+TEST(BadInput, ZeroAndNegativeSpacing) {
+  for (const char* v : {"0.0", "-0.01"}) {
+    const Result r = run_bad_case(std::string("spacing") + v,
+                                  with(kGoodCase, "spacing = 0.05", std::string("spacing = ") + v));
+    EXPECT_NE(r.output.find("'particles.spacing'"), std::string::npos);
+    EXPECT_NE(r.output.find("positive"), std::string::npos);
+  }
+}
+
+TEST(BadInput, WrongTypeNamesTheExpectedType) {
+  const Result r = run_bad_case(
+      "wrong_type", with(kGoodCase, "max = [1.0, 1.0]\nperiodic", "max = [1.0]\nperiodic"));
+  EXPECT_NE(r.output.find("'domain.max'"), std::string::npos);
+  EXPECT_NE(r.output.find("an array of 2 numbers"), std::string::npos);
+}
+
+TEST(BadInput, UnstableExplicitTimeStepNamesTheLimit) {
+  const Result r =
+      run_bad_case("unstable_dt", with(kGoodCase, "end = 0.05", "end = 0.05\ndt = 0.1"));
+  EXPECT_NE(r.output.find("time.dt = 0.1"), std::string::npos);
+  EXPECT_NE(r.output.find("beyond the stable limit"), std::string::npos);
+  EXPECT_NE(r.output.find("\"auto\""), std::string::npos);
+}
+
+TEST(BadInput, MissingCaseFile) {
+  const auto dir = scratch("missing");
+  const Result r = run((dir / "nope.toml").string() + " --out " + (dir / "out").string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("does not exist"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
+TEST(BadInput, MissingOutOption) {
+  const Result r = run(example("taylor_green_2d"));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("--out DIR"), std::string::npos) << r.output;
+}
+
+TEST(BadInput, ParticleOutsideTheDomain) {
+  const Result r =
+      run_bad_case("outside", with(kGoodCase, "min = [0.0, 0.0]\nmax = [1.0, 1.0]\n[initial]",
+                                   "min = [0.0, 0.0]\nmax = [1.5, 1.0]\n[initial]"));
+  EXPECT_NE(r.output.find("outside the domain"), std::string::npos);
+  EXPECT_NE(r.output.find("enlarge domain"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace isphdem::cli
