@@ -6,7 +6,9 @@
 # results.csv next to this script, then plot.py draws results.png if matplotlib is there.
 #
 # Before every timed run the machine must be quiet: the 1-minute load average must be <= 0.7
-# (waits up to LOAD_WAIT seconds, default 300, then runs anyway and the table says so).
+# (waits up to LOAD_WAIT seconds, default 300, then runs anyway and the table marks it with '!').
+# "other cores" is the CPU time the rest of the machine used during the run, per second of it
+# (0.00: the run had the machine to itself; 1.00: another process kept a whole core busy).
 #
 # usage: bench/fluid/run_taylor_green.sh [ISPHDEM] [WORKDIR]
 #   env: SIZES="spacing:steps ..." (default "0.01:300 0.005:100 0.0025:25")
@@ -33,6 +35,7 @@ fi
 mkdir -p "$work"
 
 load1() { cut -d' ' -f1 /proc/loadavg; }
+busy() { awk '/^cpu /{print ($2 + $3 + $4 + $7 + $8 + $9) / 100}' /proc/stat; }   # CPU-seconds
 # Wait for a quiet machine; echoes the 1-min load the run starts at (with '!' if never quiet).
 wait_quiet() {
   local waited=0
@@ -52,7 +55,7 @@ EOF
 }
 
 csv=$here/results.csv
-echo "particles,threads,preconditioner,steps,wall_s,particle_steps_per_s,ppe_it_per_step,neighbours_pct,operators_pct,assembly_pct,solve_pct,rest_pct,speedup,load1" >"$csv"
+echo "particles,threads,preconditioner,steps,wall_s,particle_steps_per_s,ppe_it_per_step,neighbours_pct,operators_pct,assembly_pct,solve_pct,rest_pct,speedup,load1,other_cores" >"$csv"
 declare -A rate1
 # run SPACING STEPS THREADS PRECONDITIONER
 run() {
@@ -63,9 +66,14 @@ run() {
   log=$work/tg_${dx}_${nt}t_${pc}.log
   load=$(wait_quiet)
   echo "dx=$dx steps=$steps threads=$nt preconditioner=$pc load=$load" >&2
-  OMP_NUM_THREADS=$nt "$isphdem" run "$case_file" --out "$work/tg_${dx}_${nt}t_$pc" \
+  local b0; b0=$(busy)
+  OMP_NUM_THREADS=$nt /usr/bin/time -f "%e %U %S" -o "$log.time" "$isphdem" run "$case_file" --out "$work/tg_${dx}_${nt}t_$pc" \
     --set particles.spacing="$dx" --set time.end="$t_end" --set output.interval=1e9 \
     --set solver.preconditioner="\"$pc\"" >"$log" 2>&1 || { cat "$log" >&2; exit 1; }
+  # Other processes during the run: CPU-seconds of the machine minus ours, per second (cores).
+  local other
+  other=$(/usr/bin/python3 -c "e, u, s = map(float, open('$log.time').read().split()[-3:]); \
+print(f'{max(0.0, ($(busy) - $b0 - u - s) / e):.2f}')")
   tail -2 "$log" >&2
   local n done parts nsteps wall rate ppe
   n=$(sed -n 's/^  particles: \([0-9]*\) fluid.*/\1/p' "$log")
@@ -80,7 +88,7 @@ run() {
     [[ $nt == 1 ]] && rate1[$dx]=$rate
     [[ -n ${rate1[$dx]:-} ]] && speedup=$(/usr/bin/python3 -c "print(f'{$rate / ${rate1[$dx]}:.2f}')")
   fi
-  echo "$n,$nt,$pc,$nsteps,$wall,$rate,$ppe,$parts,$speedup,$load" >>"$csv"
+  echo "$n,$nt,$pc,$nsteps,$wall,$rate,$ppe,$parts,$speedup,$load,$other" >>"$csv"
 }
 
 for s in $SIZES; do
@@ -92,10 +100,10 @@ if ((ILUT_STEPS > 0)); then run 0.005 "$ILUT_STEPS" 1 ilut; fi
   echo "Taylor-Green 2D (examples/taylor_green_2d), $(date -u +%Y-%m-%d), $(nproc) cores" \
        "($(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1))"
   echo
-  echo "| particles | threads | PPE preconditioner | steps | wall (s) | particle-steps/s | PPE it/step | neighbours % | operators % | assembly % | solve % | rest % | speed-up 1→2 | load (1 min) |"
-  echo "|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
-  tail -n +2 "$csv" | while IFS=, read -r n nt pc st w r p a b c d e sp l; do
-    echo "| $n | $nt | $pc | $st | $w | $r | $p | $a | $b | $c | $d | $e | $sp | $l |"
+  echo "| particles | threads | PPE preconditioner | steps | wall (s) | particle-steps/s | PPE it/step | neighbours % | operators % | assembly % | solve % | rest % | speed-up 1→2 | load before | other cores |"
+  echo "|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+  tail -n +2 "$csv" | while IFS=, read -r n nt pc st w r p a b c d e sp l o; do
+    echo "| $n | $nt | $pc | $st | $w | $r | $p | $a | $b | $c | $d | $e | $sp | $l | $o |"
   done
 } >"$here/results.md"
 cat "$here/results.md"

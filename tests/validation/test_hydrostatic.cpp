@@ -87,3 +87,41 @@ TEST(Hydrostatic, PressureExactAndNoDriftOver10000Steps) {
 
 }  // namespace
 }  // namespace isphdem::validation
+
+namespace isphdem::validation {
+namespace {
+
+// The same tank in 3D (the solver is one template): hydrostatic to 1% and no drift.
+TEST(Hydrostatic, ThreeDimensionalTankStaysHydrostatic) {
+  const CaseFile c = load_example(
+      "hydrostatic_2d",
+      {"case.dimension=3", "domain.min=[-0.05,-0.05,-0.05]", "domain.max=[0.25,0.25,0.35]",
+       "particles.spacing=0.02", "fluid.gravity=[0,0,-9.81]",
+       "fluid.blocks=[{min=[0,0,0],max=[0.2,0.2,0.2]}]",
+       "walls.boxes=[{min=[0,0,0],max=[0.2,0.2,0.25],open=[\"z+\"]}]", "time.end=0.25"});
+  FluidRun<3> run(build_fluid_scene<3>(c), parse_run_settings(c));
+  auto& s = run.solver();
+  std::map<int64_t, isph::Vec<3>> x0;
+  for (std::size_t i = 0; i < s.particles().size(); ++i) x0[s.particles().id[i]] = s.particles().x[i];
+  run.run_until(c.number("time.end"));
+  const auto& P = s.particles();
+  double ztop = -1e9;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.kind[i] == isph::kFluid) ztop = std::max(ztop, P.x[i][2]);
+  double err = 0, disp = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    disp = std::max(disp, (P.x[i] - x0[P.id[i]]).norm() / P.spacing);
+    const double depth = ztop - P.x[i][2];
+    if (P.kind[i] != isph::kFluid || depth < 3 * P.spacing) continue;
+    const double exact = 1000.0 * 9.81 * depth;
+    err = std::max(err, std::abs(P.p[i] - exact) / exact);
+  }
+  std::printf("3D tank after %ld steps: max relative pressure error %.3e, max displacement %.3e dx\n",
+              s.steps(), err, disp);
+  EXPECT_EQ(s.steps(), 500);
+  EXPECT_LT(err, 0.01);
+  EXPECT_LT(disp, 0.1);
+}
+
+}  // namespace
+}  // namespace isphdem::validation
