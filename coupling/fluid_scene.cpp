@@ -39,7 +39,9 @@ std::vector<std::string> fluid_scene_keys() {
           "solver.shifting_max",
           "solver.pressure_tolerance",
           "solver.preconditioner",
-          "solver.max_iterations"};
+          "solver.max_iterations", "solver.surface_detection", "solver.surface_divergence",
+          "solver.smagorinsky", "solver.smagorinsky_constant", "inflow.min", "inflow.max",
+          "inflow.velocity", "inflow.direction"};
 }
 
 int case_dimension(const CaseFile& c) {
@@ -213,9 +215,32 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
 
   cfg.alpha_s = c.number("solver.alpha_s", cfg.alpha_s);
   cfg.free_surface = c.boolean("solver.free_surface", cfg.free_surface);
-  cfg.surface_threshold = c.number("solver.surface_threshold", cfg.surface_threshold);
-  if (cfg.surface_threshold <= 0 || cfg.surface_threshold >= 1)
+  cfg.surface.density_ratio = c.number("solver.surface_threshold", cfg.surface.density_ratio);
+  if (cfg.surface.density_ratio <= 0 || cfg.surface.density_ratio >= 1)
     throw CaseError("'solver.surface_threshold' must lie between 0 and 1 (a number-density ratio)");
+  try {
+    cfg.surface.method = isph::surface_detection_from_name(c.string("solver.surface_detection", "number_density"));
+  } catch (const std::invalid_argument& e) {
+    throw CaseError(std::string("'solver.surface_detection': ") + e.what());
+  }
+  cfg.surface.divergence = c.positive("solver.surface_divergence", Dim == 2 ? 1.5 : 2.4);
+  cfg.smagorinsky = c.boolean("solver.smagorinsky", cfg.smagorinsky);
+  cfg.smagorinsky_constant = c.positive("solver.smagorinsky_constant", cfg.smagorinsky_constant);
+
+  if (c.has("inflow")) {
+    // The seed's forcing zone: fluid inside [min, max] moves at `velocity` (m/s) along
+    // `direction` (default: against gravity, i.e. upward).
+    isph::ForcingZone<Dim> z;
+    z.lo = to_vec<Dim>(c.numbers("inflow.min", D));
+    z.hi = to_vec<Dim>(c.numbers("inflow.max", D));
+    check_box<Dim>(z.lo, z.hi, "inflow");
+    Vec<Dim> dir = -cfg.gravity;
+    if (c.has("inflow.direction")) dir = to_vec<Dim>(c.numbers("inflow.direction", D));
+    if (!(dir.norm() > 0))
+      throw CaseError("'inflow.direction' must be a non-zero vector (or set gravity for \"upward\")");
+    z.velocity = c.number("inflow.velocity") * dir.normalized();
+    cfg.forcing.push_back(z);
+  }
   cfg.shifting.enabled = c.boolean("solver.shifting", cfg.shifting.enabled);
   cfg.shifting.coefficient = c.number("solver.shifting_coefficient", cfg.shifting.coefficient);
   cfg.shifting.max_fraction = c.number("solver.shifting_max", cfg.shifting.max_fraction);

@@ -180,7 +180,8 @@ int run_case(const CaseFile& c, const Arguments& args) {
   }
   DiagnosticsWriter diagnostics(args.out / "diagnostics.csv",
                                 {"time", "step", "wall_seconds", "ppe_iterations", "max_speed",
-                                 "dt", "ppe_residual", "surface_particles", "kinetic_energy"});
+                                 "dt", "ppe_residual", "surface_particles", "kinetic_energy",
+                                 "fluid_volume", "max_eddy_viscosity"});
   auto snapshot = [&]() {
     Snapshot s;
     s.step = solver.steps();
@@ -203,7 +204,7 @@ int run_case(const CaseFile& c, const Arguments& args) {
           ke += 0.5 * solver.config().density * P.volume * P.v[i].squaredNorm();
       diagnostics.row({solver.time(), double(step), omp_get_wtime() - start,
                        double(st.ppe_iterations), st.max_speed, st.dt, st.ppe_residual,
-                       double(st.surface_particles), ke});
+                       double(st.surface_particles), ke, st.fluid_volume, st.max_eddy_viscosity});
     }
     progress.update(solver.time(), step);
   };

@@ -1,6 +1,7 @@
 #include "free_surface.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace isph {
 
@@ -30,20 +31,48 @@ double reference_number_density(const Kernel<Dim>& kernel, double dx) {
   return s;
 }
 
+SurfaceDetection surface_detection_from_name(const std::string& name) {
+  if (name == "number_density") return SurfaceDetection::NumberDensity;
+  if (name == "divergence") return SurfaceDetection::Divergence;
+  if (name == "either") return SurfaceDetection::Either;
+  throw std::invalid_argument("unknown surface detection '" + name +
+                              "': use \"number_density\", \"divergence\" or \"either\"");
+}
+
+template <int Dim>
+void position_divergence(const Neighbors<Dim>& nb, double volume, std::vector<double>& div) {
+  const int np = static_cast<int>(nb.size());
+  div.resize(np);
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < np; ++i) {
+    double d = 0.0;
+    for (int k = nb.begin(i); k < nb.end(i); ++k) d -= nb.rij[k].dot(nb.dw[k]);
+    div[i] = volume * d;
+  }
+}
+
 template <int Dim>
 void mark_free_surface(Particles<Dim>& particles, const std::vector<double>& n, double n0,
-                       double threshold) {
+                       const std::vector<double>& div, const SurfaceCriteria& c) {
   const int np = static_cast<int>(particles.size());
+  const double div_min = c.divergence > 0.0 ? c.divergence : (Dim == 2 ? 1.5 : 2.4);
+  const bool by_density = c.method != SurfaceDetection::Divergence;
+  const bool by_div = c.method != SurfaceDetection::NumberDensity;
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < np; ++i)
-    particles.surface[i] = particles.kind[i] != kWall && n[i] < threshold * n0;
+    particles.surface[i] = particles.kind[i] != kWall &&
+                           ((by_density && n[i] < c.density_ratio * n0) || (by_div && div[i] < div_min));
 }
 
 template void number_density<2>(const Neighbors<2>&, std::vector<double>&);
 template void number_density<3>(const Neighbors<3>&, std::vector<double>&);
 template double reference_number_density<2>(const Kernel<2>&, double);
 template double reference_number_density<3>(const Kernel<3>&, double);
-template void mark_free_surface<2>(Particles<2>&, const std::vector<double>&, double, double);
-template void mark_free_surface<3>(Particles<3>&, const std::vector<double>&, double, double);
+template void position_divergence<2>(const Neighbors<2>&, double, std::vector<double>&);
+template void position_divergence<3>(const Neighbors<3>&, double, std::vector<double>&);
+template void mark_free_surface<2>(Particles<2>&, const std::vector<double>&, double,
+                                   const std::vector<double>&, const SurfaceCriteria&);
+template void mark_free_surface<3>(Particles<3>&, const std::vector<double>&, double,
+                                   const std::vector<double>&, const SurfaceCriteria&);
 
 }  // namespace isph

@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -76,8 +77,25 @@ double IsphSolver<Dim>::max_speed() const {
 
 template <int Dim>
 TimeStepLimits IsphSolver<Dim>::limits() const {
-  return time_step_limits(config_.time_step, particles_.spacing, max_speed(), config_.viscosity,
-                          config_.gravity.norm());
+  return time_step_limits(config_.time_step, particles_.spacing, max_speed(),
+                          config_.viscosity + max_eddy_viscosity_, config_.gravity.norm());
+}
+
+template <int Dim>
+const ForcingZone<Dim>* IsphSolver<Dim>::zone_of(const Vec<Dim>& x) const {
+  for (const auto& z : config_.forcing)
+    if (z.contains(x)) return &z;
+  return nullptr;
+}
+
+template <int Dim>
+void IsphSolver<Dim>::update_forcing_kinds() {
+  if (config_.forcing.empty()) return;
+  auto& P = particles_;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != kFluid && P.kind[i] != kForcing) continue;
+    P.kind[i] = zone_of(P.x[i]) ? kForcing : kFluid;
+  }
 }
 
 template <int Dim>
@@ -90,8 +108,10 @@ void IsphSolver<Dim>::update_geometry() {
   Stopwatch w(timings_.operators);
   const int n = static_cast<int>(particles_.size());
   number_density(nb_, number_density_);
+  if (config_.surface.method != SurfaceDetection::NumberDensity)
+    position_divergence(nb_, particles_.volume, divergence_r_);
   if (config_.free_surface)
-    mark_free_surface(particles_, number_density_, n0_, config_.surface_threshold);
+    mark_free_surface(particles_, number_density_, n0_, divergence_r_, config_.surface);
   else
     std::fill(particles_.surface.begin(), particles_.surface.end(), 0);
   // Walls need no operators; free-surface particles get the robust first-order forms.
@@ -104,6 +124,7 @@ void IsphSolver<Dim>::update_geometry() {
 template <int Dim>
 StepStats IsphSolver<Dim>::step(double dt) {
   if (!(dt > 0.0) || !std::isfinite(dt)) throw SimulationError("time step must be positive");
+  update_forcing_kinds();
   update_geometry();
 
   const int n = static_cast<int>(particles_.size());
@@ -159,9 +180,26 @@ StepStats IsphSolver<Dim>::step(double dt) {
       }
     }
 
+    eddy_viscosity_.assign(n, 0.0);
+    if (config_.smagorinsky) {
+      const double cs_dx = config_.smagorinsky_constant * P.spacing;
+#pragma omp parallel for schedule(static)
+      for (int i = 0; i < n; ++i) {
+        if (P.kind[i] != kFluid) continue;
+        const Mat<Dim> g = gradient(nb_, op_, P.v, i);
+        const Mat<Dim> S = 0.5 * (g + g.transpose());
+        eddy_viscosity_[i] = cs_dx * cs_dx * std::sqrt(2.0 * S.squaredNorm());
+      }
+      max_eddy_viscosity_ = *std::max_element(eddy_viscosity_.begin(), eddy_viscosity_.end());
+    }
+
     u_star_.resize(n);
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; ++i) {
+      if (P.kind[i] == kForcing) {
+        u_star_[i] = zone_of(P.x[i])->velocity;
+        continue;
+      }
       // Walls take the body acceleration too: their pressure rows impose dp/dn = rho (g - a_w).n,
       // so after the corrector the normal velocity at the wall is v_w.n again. Leaving u*_w = v_w
       // would count gravity twice in div u* next to the wall.
@@ -169,7 +207,9 @@ StepStats IsphSolver<Dim>::step(double dt) {
         u_star_[i] = P.v[i] + dt * config_.gravity;
         continue;
       }
-      u_star_[i] = P.v[i] + dt * (nu * laplacian(nb_, op_, wall_ghost_, i) + config_.gravity);
+      // The eddy viscosity enters as nu_eff lap u (its gradient term is dropped).
+      u_star_[i] = P.v[i] + dt * ((nu + eddy_viscosity_[i]) * laplacian(nb_, op_, wall_ghost_, i) +
+                                  config_.gravity);
     }
 
     // Particles whose whole support lies inside the fluid. Near the free surface the kernel is
@@ -222,19 +262,23 @@ StepStats IsphSolver<Dim>::step(double dt) {
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; ++i) {
       if (P.kind[i] == kWall) continue;
+      if (P.kind[i] == kForcing) {
+        P.v[i] = u_star_[i];
+        continue;
+      }
       P.v[i] = u_star_[i] - dt / rho0 * gradient(nb_, op_, P.p, i);
     }
 
-    // Shift fluid with full support only: near the surface the concentration gradient points out
-    // of the fluid.
-    eligible_.resize(n);
-    for (int i = 0; i < n; ++i) eligible_[i] = full_support_[i] && P.kind[i] == kFluid;
-    compute_shifts(P, nb_, kernel_, config_.shifting, dt, eligible_, shift_);
+    // Fluid with full support shifts freely; at and next to the free surface only tangentially.
+    shift_mode_.resize(n);
+    for (int i = 0; i < n; ++i)
+      shift_mode_[i] = P.kind[i] != kFluid ? 0 : (full_support_[i] ? 2 : 1);
+    compute_shifts(P, nb_, kernel_, config_.shifting, dt, shift_mode_, shift_);
     // Taylor-correct velocities to the shifted positions (u_star_ reused as scratch).
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; ++i)
       u_star_[i] =
-          eligible_[i] ? Vec<Dim>(P.v[i] + gradient(nb_, op_, P.v, i) * shift_[i]) : P.v[i];
+          shift_mode_[i] ? Vec<Dim>(P.v[i] + gradient(nb_, op_, P.v, i) * shift_[i]) : P.v[i];
     P.v.swap(u_star_);
 
     double vmax = 0.0;
@@ -244,8 +288,11 @@ StepStats IsphSolver<Dim>::step(double dt) {
       domain_.wrap(P.x[i]);
       vmax = std::max(vmax, P.v[i].norm());
       stats.surface_particles += P.surface[i];
+      stats.fluid_volume +=
+          P.volume * (full_support_[i] ? n0_ / number_density_[i] : 1.0);
     }
     stats.max_speed = vmax;
+    stats.max_eddy_viscosity = max_eddy_viscosity_;
   }
   time_ += dt;
   ++steps_;

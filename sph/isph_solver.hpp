@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "domain.hpp"
+#include "free_surface.hpp"
 #include "kernel.hpp"
 #include "linear_solver.hpp"
 #include "neighbors.hpp"
@@ -25,6 +26,19 @@ namespace isph {
 
 enum class WallSlip { NoSlip, FreeSlip };
 
+// A region whose fluid particles are driven at a prescribed velocity (kind kForcing while
+// inside), like the seed's upward inflow under the soil layer. They take part in the pressure
+// equation like fluid, so the flow around them stays divergence-free, but the pressure does not
+// change their velocity: the zone acts as an ideal pump.
+template <int Dim>
+struct ForcingZone {
+  Vec<Dim> lo = Vec<Dim>::Zero(), hi = Vec<Dim>::Zero();
+  Vec<Dim> velocity = Vec<Dim>::Zero();
+  bool contains(const Vec<Dim>& x) const {
+    return (x.array() >= lo.array()).all() && (x.array() <= hi.array()).all();
+  }
+};
+
 template <int Dim>
 struct IsphConfig {
   double smoothing_ratio = 1.3;  // h / dx
@@ -36,8 +50,12 @@ struct IsphConfig {
   // Poiseuille rows jittering by 0.2 dx at the viscous dt; 0.001 keeps the L2 error at 0.2%.
   double alpha_s = 0.001;
   bool free_surface = true;
-  double surface_threshold = 0.9;  // number-density ratio below which p = 0
+  SurfaceCriteria surface;
+  // Smagorinsky eddy viscosity nu_T = (C_s dx)^2 sqrt(2 S:S), added to nu in the viscous term.
+  bool smagorinsky = false;
+  double smagorinsky_constant = 0.1;
   WallSlip wall = WallSlip::NoSlip;
+  std::vector<ForcingZone<Dim>> forcing;
   ShiftingParams shifting;
   TimeStepParams time_step;
   LinearSolverConfig pressure_solver;
@@ -60,6 +78,10 @@ struct StepStats {
   double ppe_residual = 0.0;
   double max_speed = 0.0;
   std::size_t surface_particles = 0;
+  // Fluid volume (2D: area) from the number density, sum V0 n0/n_i over fluid with full support
+  // plus V0 for the rest: it shows compression or loss of volume that particle counts cannot.
+  double fluid_volume = 0.0;
+  double max_eddy_viscosity = 0.0;
 };
 
 template <int Dim>
@@ -86,6 +108,8 @@ class IsphSolver {
 
  private:
   void update_geometry();
+  void update_forcing_kinds();
+  const ForcingZone<Dim>* zone_of(const Vec<Dim>& x) const;
   void check_state(const char* where) const;
 
   IsphConfig<Dim> config_;
@@ -103,9 +127,10 @@ class IsphSolver {
   Neighbors<Dim> nb_;
   Operators<Dim> op_;
   PressureSystem<Dim> system_;
-  std::vector<double> number_density_, rhs_;
+  std::vector<double> number_density_, divergence_r_, rhs_, eddy_viscosity_;
+  double max_eddy_viscosity_ = 0.0;
   std::vector<Vec<Dim>> u_star_, wall_ghost_, shift_;
-  std::vector<uint8_t> operator_mode_, full_support_, eligible_;
+  std::vector<uint8_t> operator_mode_, full_support_, shift_mode_;
   Eigen::VectorXd pressure_;
 };
 

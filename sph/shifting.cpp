@@ -5,24 +5,41 @@ namespace isph {
 template <int Dim>
 void compute_shifts(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
                     const Kernel<Dim>& kernel, const ShiftingParams& params, double dt,
-                    const std::vector<uint8_t>& eligible, std::vector<Vec<Dim>>& shift) {
+                    const std::vector<uint8_t>& mode, std::vector<Vec<Dim>>& shift) {
   const int n = static_cast<int>(particles.size());
   shift.assign(n, Vec<Dim>::Zero());
   if (!params.enabled) return;
   const double dx = particles.spacing;
   const double w_dx = kernel.value(dx);
   const double cap = params.max_fraction * dx;
+
+  // Concentration gradient with the anti-clumping term, for every particle that may be shifted
+  // or that is a neighbour of one (the surface normal below is smoothed over neighbours).
+  std::vector<Vec<Dim>> grad_c(n, Vec<Dim>::Zero());
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < n; ++i) {
-    if (!eligible[i]) continue;
-    Vec<Dim> grad_c = Vec<Dim>::Zero();
+    if (particles.kind[i] == kWall) continue;
+    Vec<Dim> g = Vec<Dim>::Zero();
     for (int k = nb.begin(i); k < nb.end(i); ++k) {
       const double q = nb.w[k] / w_dx;
-      grad_c += (1.0 + params.tensile_r * q * q * q * q) * nb.dw[k];
+      g += (1.0 + params.tensile_r * q * q * q * q) * nb.dw[k];
     }
-    grad_c *= particles.volume;
+    grad_c[i] = particles.volume * g;
+  }
+
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    if (!mode[i]) continue;
     const double D = params.coefficient * kernel.h() * particles.v[i].norm() * dt;
-    Vec<Dim> dr = -D * grad_c;
+    Vec<Dim> dr = -D * grad_c[i];
+    if (mode[i] == 1) {
+      // Surface normal: grad C smoothed over the kernel. Its truncation part is coherent across
+      // neighbours while disorder averages out, so the tangential part of the shift survives.
+      Vec<Dim> nrm = nb.w_self * grad_c[i];
+      for (int k = nb.begin(i); k < nb.end(i); ++k) nrm += nb.w[k] * grad_c[nb.index[k]];
+      const double n2 = nrm.squaredNorm();
+      if (n2 > 0.0) dr -= dr.dot(nrm) / n2 * nrm;
+    }
     const double len = dr.norm();
     if (len > cap) dr *= cap / len;
     shift[i] = dr;

@@ -17,11 +17,12 @@ struct ShiftingParams {
   double tensile_r = 0.2;     // anti-clumping term R (W_ij / W(dx))^4
 };
 
-// Returns the shift of every particle (zero where not shifted). `eligible[i]` selects particles
-// that may move (fluid away from the free surface).
+// Returns the shift of every particle. mode[i]: 0 not shifted, 1 tangential only (at and near the
+// free surface, where the concentration gradient points out of the fluid: its normal component
+// would push particles off the surface; Lind et al. 2012, Khayyer et al. 2017), 2 full.
 template <int Dim>
 void compute_shifts(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
                     const Kernel<Dim>& kernel, const ShiftingParams& params, double dt,
-                    const std::vector<uint8_t>& eligible, std::vector<Vec<Dim>>& shift);
+                    const std::vector<uint8_t>& mode, std::vector<Vec<Dim>>& shift);
 
 }  // namespace isph

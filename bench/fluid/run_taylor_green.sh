@@ -9,11 +9,12 @@
 # (waits up to LOAD_WAIT seconds, default 300, then runs anyway and the table marks it with '!').
 # "other cores" is the CPU time the rest of the machine used during the run, per second of it
 # (0.00: the run had the machine to itself; 1.00: another process kept a whole core busy).
+# A run with other > OTHER_MAX (0.1) is repeated, at most TRIES (4) times in all.
 #
 # usage: bench/fluid/run_taylor_green.sh [ISPHDEM] [WORKDIR]
 #   env: SIZES="spacing:steps ..." (default "0.01:300 0.005:100 0.0025:25")
 #        THREADS="1 2"   ILUT_STEPS=10 (the 40k case once with the ILUT preconditioner; 0: skip)
-#        LOAD_MAX=0.7    LOAD_WAIT=300
+#        LOAD_MAX=0.7    LOAD_WAIT=300    OTHER_MAX=0.1    TRIES=4
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -25,6 +26,8 @@ THREADS=${THREADS:-"1 2"}
 ILUT_STEPS=${ILUT_STEPS:-10}
 LOAD_MAX=${LOAD_MAX:-0.7}
 LOAD_WAIT=${LOAD_WAIT:-300}
+OTHER_MAX=${OTHER_MAX:-0.1}
+TRIES=${TRIES:-4}
 nu=0.01   # viscosity of the case: dt = 0.125 dx^2 / nu (viscous limit, smaller than CFL here)
 
 if [[ $# -eq 0 ]]; then   # default binary: build it if needed
@@ -64,16 +67,23 @@ run() {
   dt=$(/usr/bin/python3 -c "print(0.125 * $dx**2 / $nu)")
   t_end=$(/usr/bin/python3 -c "print($steps * $dt)")   # run_until takes equal steps
   log=$work/tg_${dx}_${nt}t_${pc}.log
-  load=$(wait_quiet)
-  echo "dx=$dx steps=$steps threads=$nt preconditioner=$pc load=$load" >&2
-  local b0; b0=$(busy)
-  OMP_NUM_THREADS=$nt /usr/bin/time -f "%e %U %S" -o "$log.time" "$isphdem" run "$case_file" --out "$work/tg_${dx}_${nt}t_$pc" \
-    --set particles.spacing="$dx" --set time.end="$t_end" --set output.interval=1e9 \
-    --set solver.preconditioner="\"$pc\"" >"$log" 2>&1 || { cat "$log" >&2; exit 1; }
-  # Other processes during the run: CPU-seconds of the machine minus ours, per second (cores).
-  local other
-  other=$(/usr/bin/python3 -c "e, u, s = map(float, open('$log.time').read().split()[-3:]); \
+  # A run that another process disturbed (other > OTHER_MAX cores) is repeated, up to TRIES
+  # times; the last attempt counts whatever happened.
+  local try other b0
+  for ((try = 1; try <= TRIES; try++)); do
+    load=$(wait_quiet)
+    echo "dx=$dx steps=$steps threads=$nt preconditioner=$pc load=$load (try $try)" >&2
+    b0=$(busy)
+    OMP_NUM_THREADS=$nt /usr/bin/time -f "%e %U %S" -o "$log.time" "$isphdem" run "$case_file" \
+      --out "$work/tg_${dx}_${nt}t_$pc" --set particles.spacing="$dx" --set time.end="$t_end" \
+      --set output.interval=1e9 --set solver.preconditioner="\"$pc\"" >"$log" 2>&1 ||
+      { cat "$log" >&2; exit 1; }
+    # Other processes during the run: CPU-seconds of the machine minus ours, per second (cores).
+    other=$(/usr/bin/python3 -c "e, u, s = map(float, open('$log.time').read().split()[-3:]); \
 print(f'{max(0.0, ($(busy) - $b0 - u - s) / e):.2f}')")
+    echo "  other processes used $other cores" >&2
+    /usr/bin/python3 -c "import sys; sys.exit(0 if $other <= $OTHER_MAX else 1)" && break
+  done
   tail -2 "$log" >&2
   local n done parts nsteps wall rate ppe
   n=$(sed -n 's/^  particles: \([0-9]*\) fluid.*/\1/p' "$log")
