@@ -39,9 +39,15 @@ std::vector<std::string> fluid_scene_keys() {
           "solver.shifting_max",
           "solver.pressure_tolerance",
           "solver.preconditioner",
-          "solver.max_iterations", "solver.surface_detection", "solver.surface_divergence",
-          "solver.smagorinsky", "solver.smagorinsky_constant", "inflow.min", "inflow.max",
-          "inflow.velocity", "inflow.direction"};
+          "solver.max_iterations",
+          "solver.surface_detection",
+          "solver.surface_divergence",
+          "solver.smagorinsky",
+          "solver.smagorinsky_constant",
+          "inflow.min",
+          "inflow.max",
+          "inflow.velocity",
+          "inflow.direction"};
 }
 
 int case_dimension(const CaseFile& c) {
@@ -219,7 +225,8 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
   if (cfg.surface.density_ratio <= 0 || cfg.surface.density_ratio >= 1)
     throw CaseError("'solver.surface_threshold' must lie between 0 and 1 (a number-density ratio)");
   try {
-    cfg.surface.method = isph::surface_detection_from_name(c.string("solver.surface_detection", "number_density"));
+    cfg.surface.method =
+        isph::surface_detection_from_name(c.string("solver.surface_detection", "number_density"));
   } catch (const std::invalid_argument& e) {
     throw CaseError(std::string("'solver.surface_detection': ") + e.what());
   }
@@ -237,7 +244,8 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
     Vec<Dim> dir = -cfg.gravity;
     if (c.has("inflow.direction")) dir = to_vec<Dim>(c.numbers("inflow.direction", D));
     if (!(dir.norm() > 0))
-      throw CaseError("'inflow.direction' must be a non-zero vector (or set gravity for \"upward\")");
+      throw CaseError(
+          "'inflow.direction' must be a non-zero vector (or set gravity for \"upward\")");
     z.velocity = c.number("inflow.velocity") * dir.normalized();
     cfg.forcing.push_back(z);
   }

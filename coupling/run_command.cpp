@@ -178,10 +178,10 @@ int run_case(const CaseFile& c, const Arguments& args) {
     std::ofstream f(args.out / "case_used.toml");
     f << "# " << c.path().string() << " with the overrides of this run\n" << c.table() << "\n";
   }
-  DiagnosticsWriter diagnostics(args.out / "diagnostics.csv",
-                                {"time", "step", "wall_seconds", "ppe_iterations", "max_speed",
-                                 "dt", "ppe_residual", "surface_particles", "kinetic_energy",
-                                 "fluid_volume", "max_eddy_viscosity"});
+  DiagnosticsWriter diagnostics(
+      args.out / "diagnostics.csv",
+      {"time", "step", "wall_seconds", "ppe_iterations", "max_speed", "dt", "ppe_residual",
+       "surface_particles", "kinetic_energy", "fluid_volume", "max_eddy_viscosity"});
   auto snapshot = [&]() {
     Snapshot s;
     s.step = solver.steps();

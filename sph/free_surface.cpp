@@ -60,8 +60,9 @@ void mark_free_surface(Particles<Dim>& particles, const std::vector<double>& n, 
   const bool by_div = c.method != SurfaceDetection::NumberDensity;
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < np; ++i)
-    particles.surface[i] = particles.kind[i] != kWall &&
-                           ((by_density && n[i] < c.density_ratio * n0) || (by_div && div[i] < div_min));
+    particles.surface[i] =
+        particles.kind[i] != kWall &&
+        ((by_density && n[i] < c.density_ratio * n0) || (by_div && div[i] < div_min));
 }
 
 template void number_density<2>(const Neighbors<2>&, std::vector<double>&);

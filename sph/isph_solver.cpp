@@ -114,7 +114,10 @@ void IsphSolver<Dim>::update_geometry() {
     mark_free_surface(particles_, number_density_, n0_, divergence_r_, config_.surface);
   else
     std::fill(particles_.surface.begin(), particles_.surface.end(), 0);
-  // Walls need no operators; free-surface particles get the robust first-order forms.
+  // Walls need no operators; free-surface particles get the robust first-order forms (a
+  // one-sided quadratic fit extrapolates). Their neighbours keep the quadratic fit: the Brookshaw
+  // Laplacian is not exact for a linear (hydrostatic) field on a truncated support, and still
+  // water drifted and blew up after 6000 steps with it.
   operator_mode_.resize(n);
   for (int i = 0; i < n; ++i)
     operator_mode_[i] = particles_.kind[i] == kWall ? 0 : (particles_.surface[i] ? 1 : 2);
@@ -207,9 +210,33 @@ StepStats IsphSolver<Dim>::step(double dt) {
         u_star_[i] = P.v[i] + dt * config_.gravity;
         continue;
       }
+      // (Wall tangential velocities are replaced below, once the fluid u* is known.)
       // The eddy viscosity enters as nu_eff lap u (its gradient term is dropped).
       u_star_[i] = P.v[i] + dt * ((nu + eddy_viscosity_[i]) * laplacian(nb_, op_, wall_ghost_, i) +
                                   config_.gravity);
+    }
+
+    // In div u* only the wall-normal velocity is a boundary condition. A no-slip wall's zero
+    // tangential velocity next to fluid sliding along it reads as a divergence wherever the wall
+    // extends beyond the fluid (the toe of a surge, corners), and the pressure answered with a
+    // pocket of suction that pulled the toe into the floor. Walls with known normals therefore
+    // carry the fluid's tangential u* (Shepard average) and their own normal u*.
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      if (P.kind[i] != kWall || P.normal[i].squaredNorm() == 0.0) continue;
+      double ws = 0.0;
+      Vec<Dim> us = Vec<Dim>::Zero();
+      for (int k = nb_.begin(i); k < nb_.end(i); ++k) {
+        const int j = nb_.index[k];
+        if (P.kind[j] == kWall) continue;
+        ws += nb_.w[k];
+        us += nb_.w[k] * u_star_[j];
+      }
+      if (ws <= 0.0) continue;
+      us /= ws;
+      const Vec<Dim>& nrm = P.normal[i];
+      const Vec<Dim> own = P.v[i] + dt * config_.gravity;
+      u_star_[i] = us - us.dot(nrm) * nrm + own.dot(nrm) * nrm;
     }
 
     // Particles whose whole support lies inside the fluid. Near the free surface the kernel is
@@ -285,11 +312,11 @@ StepStats IsphSolver<Dim>::step(double dt) {
     for (int i = 0; i < n; ++i) {
       if (P.kind[i] == kWall) continue;
       P.x[i] += dt * P.v[i] + shift_[i];
+      keep_off_walls(i);
       domain_.wrap(P.x[i]);
       vmax = std::max(vmax, P.v[i].norm());
       stats.surface_particles += P.surface[i];
-      stats.fluid_volume +=
-          P.volume * (full_support_[i] ? n0_ / number_density_[i] : 1.0);
+      stats.fluid_volume += P.volume * (full_support_[i] ? n0_ / number_density_[i] : 1.0);
     }
     stats.max_speed = vmax;
     stats.max_eddy_viscosity = max_eddy_viscosity_;
@@ -304,6 +331,31 @@ StepStats IsphSolver<Dim>::step(double dt) {
         " spacings in one step (max |u| = " + fmt(stats.max_speed) +
         " m/s); use time.dt = \"auto\" or a dt below " + fmt(limits().min()) + " s");
   return stats;
+}
+
+template <int Dim>
+void IsphSolver<Dim>::keep_off_walls(int i) {
+  // Nothing in the pressure equation reacts to a position error, so a particle driven fast along
+  // a wall (the toe of a dam break) can creep into it and then blow up among the wall
+  // particles. Walls with known geometry therefore act as a kinematic constraint: a fluid
+  // particle closer than `min_wall_distance` to the wall surface of a neighbouring wall particle
+  // is put back at that distance and loses its velocity into the wall.
+  auto& P = particles_;
+  const double min_dist = config_.min_wall_distance * P.spacing;
+  for (int k = nb_.begin(i); k < nb_.end(i); ++k) {
+    const int w = nb_.index[k];
+    if (P.kind[w] != kWall || P.normal[w].squaredNorm() == 0.0) continue;
+    const Vec<Dim>& nrm = P.normal[w];
+    // Only walls whose surface patch is beside the particle (not a neighbouring face at a corner).
+    const Vec<Dim> d = domain_.min_image(P.x[i] - P.x[w]);
+    const Vec<Dim> tangential = d - d.dot(nrm) * nrm;
+    if (tangential.norm() > 0.5 * P.spacing) continue;
+    const double gap = d.dot(nrm) - P.wall_distance[w];
+    if (gap >= min_dist) continue;
+    P.x[i] += (min_dist - gap) * nrm;
+    const double vn = P.v[i].dot(nrm) - P.v[w].dot(nrm);
+    if (vn < 0.0) P.v[i] -= vn * nrm;
+  }
 }
 
 template <int Dim>

@@ -55,6 +55,9 @@ struct IsphConfig {
   bool smagorinsky = false;
   double smagorinsky_constant = 0.1;
   WallSlip wall = WallSlip::NoSlip;
+  // Closest a fluid particle may come to a wall surface, in spacings (the first fluid layer sits
+  // at 0.5).
+  double min_wall_distance = 0.25;
   std::vector<ForcingZone<Dim>> forcing;
   ShiftingParams shifting;
   TimeStepParams time_step;
@@ -109,6 +112,7 @@ class IsphSolver {
  private:
   void update_geometry();
   void update_forcing_kinds();
+  void keep_off_walls(int i);
   const ForcingZone<Dim>* zone_of(const Vec<Dim>& x) const;
   void check_state(const char* where) const;
 
