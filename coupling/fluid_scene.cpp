@@ -149,6 +149,16 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
     Box b{to_vec<Dim>(table_numbers(*t, "min", D, ctx)),
           to_vec<Dim>(table_numbers(*t, "max", D, ctx))};
     check_box<Dim>(b.lo, b.hi, ctx);
+    // No wall particle may see fluid on both sides of a block: its extrapolated pressure and
+    // velocity would mix the two sides and couple them through the wall (a still tank with
+    // 3-particle inner walls tore apart within 0.1 s). Two kernel supports are needed.
+    const double thinnest = (b.hi - b.lo).minCoeff();
+    const double needed = 2.0 * (2.0 * cfg.smoothing_ratio * dx);
+    if (thinnest < needed - 1e-9)
+      throw CaseError("'" + ctx + "' is " + std::to_string(thinnest * 1e3) +
+                      " mm thin, less than two kernel supports (" + std::to_string(needed * 1e3) +
+                      " mm at this spacing): the two sides would interact through it; make it "
+                      "thicker or refine particles.spacing");
     isph::add_wall_block<Dim>(s.particles, b.lo, b.hi, dx);
     wall_blocks.push_back(b);
   }

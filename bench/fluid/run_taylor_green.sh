@@ -58,7 +58,7 @@ EOF
 }
 
 csv=$here/results.csv
-echo "particles,threads,preconditioner,steps,wall_s,particle_steps_per_s,ppe_it_per_step,neighbours_pct,operators_pct,assembly_pct,solve_pct,rest_pct,speedup,load1,other_cores" >"$csv"
+echo "particles,threads,preconditioner,steps,wall_s,particle_steps_per_s,ppe_it_per_step,neighbours_pct,operators_pct,assembly_pct,solve_pct,rest_pct,speedup,load1,other_cores,cpu_s" >"$csv"
 declare -A rate1
 # run SPACING STEPS THREADS PRECONDITIONER
 run() {
@@ -85,7 +85,9 @@ print(f'{max(0.0, ($(busy) - $b0 - u - s) / e):.2f}')")
     /usr/bin/python3 -c "import sys; sys.exit(0 if $other <= $OTHER_MAX else 1)" && break
   done
   tail -2 "$log" >&2
-  local n done parts nsteps wall rate ppe
+  local n done parts nsteps wall rate ppe cpu
+  cpu=$(/usr/bin/python3 -c "e, u, s = map(float, open('$log.time').read().split()[-3:]); \
+print(f'{u + s:.1f}')")
   n=$(sed -n 's/^  particles: \([0-9]*\) fluid.*/\1/p' "$log")
   done=$(grep '^done:' "$log")
   parts=$(grep 'time per part:' "$log" | grep -o '[0-9]*%' | tr -d '%' | paste -sd, -)
@@ -98,7 +100,7 @@ print(f'{max(0.0, ($(busy) - $b0 - u - s) / e):.2f}')")
     [[ $nt == 1 ]] && rate1[$dx]=$rate
     [[ -n ${rate1[$dx]:-} ]] && speedup=$(/usr/bin/python3 -c "print(f'{$rate / ${rate1[$dx]}:.2f}')")
   fi
-  echo "$n,$nt,$pc,$nsteps,$wall,$rate,$ppe,$parts,$speedup,$load,$other" >>"$csv"
+  echo "$n,$nt,$pc,$nsteps,$wall,$rate,$ppe,$parts,$speedup,$load,$other,$cpu" >>"$csv"
 }
 
 for s in $SIZES; do
@@ -110,10 +112,10 @@ if ((ILUT_STEPS > 0)); then run 0.005 "$ILUT_STEPS" 1 ilut; fi
   echo "Taylor-Green 2D (examples/taylor_green_2d), $(date -u +%Y-%m-%d), $(nproc) cores" \
        "($(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1))"
   echo
-  echo "| particles | threads | PPE preconditioner | steps | wall (s) | particle-steps/s | PPE it/step | neighbours % | operators % | assembly % | solve % | rest % | speed-up 1→2 | load before | other cores |"
+  echo "| particles | threads | PPE preconditioner | steps | wall (s) | particle-steps/s | PPE it/step | neighbours % | operators % | assembly % | solve % | rest % | speed-up 1→2 | load before | other cores | CPU s |"
   echo "|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
-  tail -n +2 "$csv" | while IFS=, read -r n nt pc st w r p a b c d e sp l o; do
-    echo "| $n | $nt | $pc | $st | $w | $r | $p | $a | $b | $c | $d | $e | $sp | $l | $o |"
+  tail -n +2 "$csv" | while IFS=, read -r n nt pc st w r p a b c d e sp l o cpu; do
+    echo "| $n | $nt | $pc | $st | $w | $r | $p | $a | $b | $c | $d | $e | $sp | $l | $o | $cpu |"
   done
 } >"$here/results.md"
 cat "$here/results.md"

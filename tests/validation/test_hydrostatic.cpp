@@ -102,7 +102,8 @@ TEST(Hydrostatic, ThreeDimensionalTankStaysHydrostatic) {
   FluidRun<3> run(build_fluid_scene<3>(c), parse_run_settings(c));
   auto& s = run.solver();
   std::map<int64_t, isph::Vec<3>> x0;
-  for (std::size_t i = 0; i < s.particles().size(); ++i) x0[s.particles().id[i]] = s.particles().x[i];
+  for (std::size_t i = 0; i < s.particles().size(); ++i)
+    x0[s.particles().id[i]] = s.particles().x[i];
   run.run_until(c.number("time.end"));
   const auto& P = s.particles();
   double ztop = -1e9;
@@ -116,8 +117,9 @@ TEST(Hydrostatic, ThreeDimensionalTankStaysHydrostatic) {
     const double exact = 1000.0 * 9.81 * depth;
     err = std::max(err, std::abs(P.p[i] - exact) / exact);
   }
-  std::printf("3D tank after %ld steps: max relative pressure error %.3e, max displacement %.3e dx\n",
-              s.steps(), err, disp);
+  std::printf(
+      "3D tank after %ld steps: max relative pressure error %.3e, max displacement %.3e dx\n",
+      s.steps(), err, disp);
   EXPECT_EQ(s.steps(), 500);
   EXPECT_LT(err, 0.01);
   EXPECT_LT(disp, 0.1);
