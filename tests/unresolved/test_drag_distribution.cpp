@@ -129,7 +129,7 @@ TEST(DragDistribution, FixedBedCarriesTheErgunPressureDrop) {
       "fixed bed: i = %.4f, %d interior grains, max rel. error of f_k vs rho g i s^3 %.2e\n",
       i_ergun, interior, worst);
   EXPECT_GT(interior, 20);
-  EXPECT_LT(worst, 0.05);
+  EXPECT_LT(worst, 0.01);
 }
 
 TEST(DragDistribution, PressureGradientForce) {
