@@ -16,6 +16,7 @@ double Grain<Dim>::volume() const {
 template <int Dim>
 PorosityMap<Dim>::PorosityMap(const PorosityMapSettings& s)
     : settings_(s),
+      // A placeholder length lets the checks below give the porosity-map message, not the kernel's.
       kernel_(s.kernel, s.smoothing_length > 0.0 ? s.smoothing_length : 1.0),
       normalisation_(Dim == 2 ? s.slab_thickness : 1.0) {
   if (!(s.smoothing_length > 0.0))
