@@ -99,14 +99,7 @@ void FixCoupleIsph::find_multisphere() {
     ms_ = dynamic_cast<FixMultisphere*>(modify->fix[i]);
 }
 
-bool FixCoupleIsph::is_free_grain(int i) const {
-  return (atom->mask[i] & groupbit) && !(ms_ && ms_->belongs_to(i) >= 0);
-}
-
-// Atom loads go in here, before the pair forces and before fix multisphere's setup() sums atom
-// forces into its bodies, so that the setup forces include them whatever the fix order.
-void FixCoupleIsph::setup_pre_force(int) {
-  if (!ms_) find_multisphere();
+void FixCoupleIsph::add_atom_loads() {
   double** f = atom->f;
   double** torque = atom->torque;
   for (int i = 0; i < atom->nlocal; i++) {
@@ -116,6 +109,17 @@ void FixCoupleIsph::setup_pre_force(int) {
       torque[i][k] += hload_[i][3 + k];
     }
   }
+}
+
+bool FixCoupleIsph::is_free_grain(int i) const {
+  return (atom->mask[i] & groupbit) && !(ms_ && ms_->belongs_to(i) >= 0);
+}
+
+// Atom loads go in here, before the pair forces and before fix multisphere's setup() sums atom
+// forces into its bodies, so that the setup forces include them whatever the fix order.
+void FixCoupleIsph::setup_pre_force(int) {
+  if (!ms_) find_multisphere();
+  add_atom_loads();
 }
 
 // Body loads go in here: fix multisphere's setup() adds to, never resets, the body force.
@@ -129,15 +133,7 @@ void FixCoupleIsph::setup(int) {
 }
 
 void FixCoupleIsph::post_force(int) {
-  double** f = atom->f;
-  double** torque = atom->torque;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit)) continue;
-    for (int k = 0; k < 3; k++) {
-      f[i][k] += hload_[i][k];
-      torque[i][k] += hload_[i][3 + k];
-    }
-  }
+  add_atom_loads();
   add_body_loads();
   if (planar_) {
     apply_planar_to_bodies(false);  // bodies inserted during the run get their flags here

@@ -60,6 +60,7 @@ class FixCoupleIsph : public Fix {
 
   void find_multisphere();
   bool is_free_grain(int i) const;  // in group and not a clump member
+  void add_atom_loads();
   void add_body_loads();
   void add_to_body(int body_tag, const double* df, const double* dt, const double* x_unwrapped);
   void apply_planar_to_forces();

@@ -51,4 +51,21 @@ inline int count_snapshots(const std::filesystem::path& dir) {
   return n;
 }
 
+// Runs ParaView's own XDMF reader over an output directory (tests/output/check_xdmf.py checks
+// every step). Returns the exit status and prints what the checker said.
+inline int paraview_check(const std::filesystem::path& out, const std::string& args) {
+  const std::string cmd = "QT_QPA_PLATFORM=offscreen pvpython --force-offscreen-rendering " +
+                          std::string(ISPHDEM_SOURCE_DIR) + "/tests/output/check_xdmf.py " +
+                          out.string() + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::array<char, 512> buf;
+  std::string said;
+  while (std::fgets(buf.data(), buf.size(), p)) said += buf.data();
+  const int status = pclose(p);
+  std::printf("pvpython: %s", said.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+inline bool has_pvpython() { return std::system("command -v pvpython > /dev/null 2>&1") == 0; }
+
 }  // namespace isphdem::cli

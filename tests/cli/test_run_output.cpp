@@ -29,19 +29,10 @@ TEST(RunOutput, TaylorGreenWritesTheContractAndParaViewReadsIt) {
   for (std::string line; std::getline(csv, line);) ++rows;
   EXPECT_GT(rows, 0);
 
-  if (std::system("command -v pvpython > /dev/null 2>&1") != 0)
-    GTEST_SKIP() << "pvpython not installed";
-  const std::string check =
-      "QT_QPA_PLATFORM=offscreen pvpython --force-offscreen-rendering " +
-      std::string(ISPHDEM_SOURCE_DIR) + "/tests/output/check_xdmf.py " + (dir / "out").string() +
-      " --steps 6 --expect fluid=400:pressure,velocity/3,porosity,kind,id 2>&1";
-  FILE* p = popen(check.c_str(), "r");
-  std::string out;
-  char buf[512];
-  while (std::fgets(buf, sizeof buf, p)) out += buf;
-  const int status = pclose(p);
-  EXPECT_EQ(WEXITSTATUS(status), 0) << out;
-  std::printf("pvpython: %s", out.c_str());
+  if (!has_pvpython()) GTEST_SKIP() << "pvpython not installed";
+  EXPECT_EQ(paraview_check(dir / "out",
+                           "--steps 6 --expect fluid=400:pressure,velocity/3,porosity,kind,id"),
+            0);
 }
 
 TEST(RunOutput, ProgressLineIsQuietWhenNotATerminal) {

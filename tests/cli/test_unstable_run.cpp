@@ -23,13 +23,9 @@ TEST(UnstableRun, StopsCleanlyWithOutputIntact) {
   const int snaps = count_snapshots(dir / "out");
   EXPECT_GE(snaps, 2);
 
-  if (std::system("command -v pvpython > /dev/null 2>&1") != 0)
-    GTEST_SKIP() << "pvpython not installed";
-  // ParaView loads every step listed in the XDMF (check_xdmf.py checks each one).
-  const std::string check = "QT_QPA_PLATFORM=offscreen pvpython --force-offscreen-rendering " +
-                            std::string(ISPHDEM_SOURCE_DIR) + "/tests/output/check_xdmf.py " +
-                            (dir / "out").string() + " --steps " + std::to_string(snaps) + " 2>&1";
-  EXPECT_EQ(std::system(check.c_str()), 0);
+  if (!has_pvpython()) GTEST_SKIP() << "pvpython not installed";
+  // ParaView loads every step listed in the XDMF.
+  EXPECT_EQ(paraview_check(dir / "out", "--steps " + std::to_string(snaps)), 0);
 }
 
 }  // namespace
