@@ -15,6 +15,7 @@
 #   env: SIZES="spacing:steps ..." (default "0.01:300 0.005:100 0.0025:25")
 #        THREADS="1 2"   ILUT_STEPS=10 (the 40k case once with the ILUT preconditioner; 0: skip)
 #        LOAD_MAX=0.7    LOAD_WAIT=300    OTHER_MAX=0.1    TRIES=4
+#        TABLE_ONLY=1: no runs, only results.md and results.png again from results.csv
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -58,6 +59,7 @@ EOF
 }
 
 csv=$here/results.csv
+if [[ -z ${TABLE_ONLY:-} ]]; then   # TABLE_ONLY=1: only redo results.md/png from results.csv
 echo "particles,threads,preconditioner,steps,wall_s,particle_steps_per_s,ppe_it_per_step,neighbours_pct,operators_pct,assembly_pct,solve_pct,rest_pct,speedup,load1,other_cores,cpu_s" >"$csv"
 declare -A rate1
 # run SPACING STEPS THREADS PRECONDITIONER
@@ -107,13 +109,14 @@ for s in $SIZES; do
   for nt in $THREADS; do run "${s%%:*}" "${s##*:}" "$nt" jacobi; done
 done
 if ((ILUT_STEPS > 0)); then run 0.005 "$ILUT_STEPS" 1 ilut; fi
+fi
 
 {
   echo "Taylor-Green 2D (examples/taylor_green_2d), $(date -u +%Y-%m-%d), $(nproc) cores" \
        "($(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1))"
   echo
   echo "| particles | threads | PPE preconditioner | steps | wall (s) | particle-steps/s | PPE it/step | neighbours % | operators % | assembly % | solve % | rest % | speed-up 1→2 | load before | other cores | CPU s |"
-  echo "|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+  echo "|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
   tail -n +2 "$csv" | while IFS=, read -r n nt pc st w r p a b c d e sp l o cpu; do
     echo "| $n | $nt | $pc | $st | $w | $r | $p | $a | $b | $c | $d | $e | $sp | $l | $o | $cpu |"
   done
