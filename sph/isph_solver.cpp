@@ -65,19 +65,6 @@ IsphSolver<Dim>::IsphSolver(const IsphConfig<Dim>& config, const Domain<Dim>& do
                             " starts outside the domain box: enlarge domain.min/domain.max");
   for (auto& x : particles_.x) domain_.wrap(x);
   n0_ = reference_number_density(kernel_, particles_.spacing);
-  {  // neighbours of a particle in the undisturbed lattice (20 in 2D at h = 1.3 dx)
-    const double dx = particles_.spacing, r = kernel_.support();
-    const int m = static_cast<int>(std::ceil(r / dx));
-    Eigen::Matrix<int, Dim, 1> c = Eigen::Matrix<int, Dim, 1>::Constant(-m);
-    lattice_neighbors_ = 0;
-    while (true) {
-      const double d = c.template cast<double>().norm() * dx;
-      if (d > 0.0 && d < r) ++lattice_neighbors_;
-      int a = 0;
-      while (a < Dim && ++c[a] > m) c[a++] = -m;
-      if (a == Dim) break;
-    }
-  }
 }
 
 template <int Dim>
@@ -127,14 +114,6 @@ void IsphSolver<Dim>::update_geometry() {
     mark_free_surface(particles_, number_density_, n0_, divergence_r_, config_.surface);
   else
     std::fill(particles_.surface.begin(), particles_.surface.end(), 0);
-  // A clump of a few particles pressed together (splash, toe) reaches n0 with a handful of
-  // neighbours and passed the number-density test as interior; its quadratic pressure fit on 5-6
-  // points then gave spikes of 1e4-1e7 Pa at the toe. A support holding fewer than half the
-  // neighbours of the undisturbed lattice (walls included) is free surface whatever its density.
-  if (config_.free_surface)
-    for (int i = 0; i < n; ++i)
-      if (particles_.kind[i] != kWall && 2 * (nb_.end(i) - nb_.begin(i)) < lattice_neighbors_)
-        particles_.surface[i] = 1;
   // Walls need no operators; free-surface particles get the robust first-order forms (a
   // one-sided quadratic fit extrapolates). Their neighbours keep the quadratic fit: the Brookshaw
   // Laplacian is not exact for a linear (hydrostatic) field on a truncated support, and still

@@ -123,7 +123,6 @@ class IsphSolver {
   NeighborSearch<Dim> search_;
   std::unique_ptr<LinearSolver> linear_solver_;
   double n0_ = 0.0;
-  int lattice_neighbors_ = 0;
   double time_ = 0.0;
   long steps_ = 0;
   StepTimings timings_;
