@@ -32,6 +32,7 @@ std::vector<std::string> fluid_scene_keys() {
           "initial.velocity",
           "initial.amplitude",
           "solver.alpha_s",
+          "solver.min_wall_distance",
           "solver.free_surface",
           "solver.surface_threshold",
           "solver.shifting",
@@ -230,6 +231,7 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
   }
 
   cfg.alpha_s = c.number("solver.alpha_s", cfg.alpha_s);
+  cfg.min_wall_distance = c.number("solver.min_wall_distance", cfg.min_wall_distance);
   cfg.free_surface = c.boolean("solver.free_surface", cfg.free_surface);
   cfg.surface.density_ratio = c.number("solver.surface_threshold", cfg.surface.density_ratio);
   if (cfg.surface.density_ratio <= 0 || cfg.surface.density_ratio >= 1)

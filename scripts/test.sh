@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs the default test suite (labels unit, validation, mpi;
-# tests labelled slow are left out: run them with `ctest --test-dir build -L slow`).
+# Installs what is missing, builds, and runs the default test suite (labels unit, validation, mpi).
+# Left out: tests labelled slow (`ctest --test-dir build -L slow`) and work_in_progress (known not
+# to pass yet, e.g. the dam-break comparison: `ctest --test-dir build -L work_in_progress`).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/scripts/setup.sh"
@@ -8,4 +9,4 @@ bash "$root/scripts/build.sh"
 # Open MPI refuses root unless told; CI and these machines run as root.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMP_NUM_THREADS="${OMP_NUM_THREADS:-2}"
-ctest --test-dir "${ISPHDEM_BUILD_DIR:-$root/build}" --output-on-failure -LE slow "$@"
+ctest --test-dir "${ISPHDEM_BUILD_DIR:-$root/build}" --output-on-failure -LE "slow|work_in_progress" "$@"

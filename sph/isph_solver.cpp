@@ -298,14 +298,43 @@ StepStats IsphSolver<Dim>::step(double dt) {
 
     // Fluid with full support shifts freely; at and next to the free surface only tangentially.
     shift_mode_.resize(n);
-    for (int i = 0; i < n; ++i)
-      shift_mode_[i] = P.kind[i] != kFluid ? 0 : (full_support_[i] ? 2 : 1);
-    compute_shifts(P, nb_, kernel_, config_.shifting, dt, shift_mode_, shift_);
-    // Taylor-correct velocities to the shifted positions (u_star_ reused as scratch).
 #pragma omp parallel for schedule(static)
-    for (int i = 0; i < n; ++i)
-      u_star_[i] =
-          shift_mode_[i] ? Vec<Dim>(P.v[i] + gradient(nb_, op_, P.v, i) * shift_[i]) : P.v[i];
+    for (int i = 0; i < n; ++i) {
+      shift_mode_[i] = P.kind[i] != kFluid ? 0 : (full_support_[i] ? 2 : 1);
+      // Shifting repairs disorder inside the fluid. A splash tip or a toe particle whose support
+      // is mostly wall has no meaningful concentration gradient: its shift came out at the cap,
+      // against the flow, and the Taylor correction turned that into a velocity kick every step.
+      if (shift_mode_[i] == 1) {
+        int nf = 0;
+        for (int k = nb_.begin(i); k < nb_.end(i); ++k) nf += P.kind[nb_.index[k]] != kWall;
+        if (nf < 3 * Dim) shift_mode_[i] = 0;
+      }
+    }
+    compute_shifts(P, nb_, kernel_, config_.shifting, dt, shift_mode_, shift_);
+    // Taylor-correct velocities to the shifted positions (u_star_ reused as scratch), limited so
+    // that no new extremum appears: each component stays within the range of the particle's own
+    // and its fluid neighbours' values. On a truncated support (free surface, splash tip) the
+    // gradient's own coefficient -sum_j G_ij does not vanish, so u_i + (grad u)_i . dr is
+    // u_i (1 - dr . sum_j G_ij) + ...: whenever the shift has a component along -sum_j G_ij the
+    // particle's velocity was amplified by a fixed factor in every step, and the shift itself
+    // grows with |u|. Surface and toe particles ran away exponentially in the step count, which
+    // is why a smaller dt failed earlier. The limiter is inactive in smooth interior flow.
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      if (!shift_mode_[i]) {
+        u_star_[i] = P.v[i];
+        continue;
+      }
+      Vec<Dim> u = P.v[i] + gradient(nb_, op_, P.v, i) * shift_[i];
+      Vec<Dim> lo = P.v[i], hi = P.v[i];
+      for (int k = nb_.begin(i); k < nb_.end(i); ++k) {
+        const int j = nb_.index[k];
+        if (P.kind[j] == kWall) continue;
+        lo = lo.cwiseMin(P.v[j]);
+        hi = hi.cwiseMax(P.v[j]);
+      }
+      u_star_[i] = u.cwiseMax(lo).cwiseMin(hi);
+    }
     P.v.swap(u_star_);
 
     double vmax = 0.0;

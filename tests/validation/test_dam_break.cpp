@@ -1,0 +1,116 @@
+// Dam break after Martin & Moyce (1952): a column a wide and 2a high collapses into a dry tank.
+// The surge front Z = x/a (the largest x of fluid near the floor, plus half a spacing for the
+// volume each particle carries) is compared with their measurements against T = t sqrt(2g/a).
+// The run must reach T = 3 and stay within 5% of the table for T <= 2.5.
+//
+// DAM_BREAK_RESOLUTION (particles across a) is 40 for the default build of this test and 80 for
+// the slow variant.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "case_path.hpp"
+#include "fluid_run.hpp"
+
+#ifndef DAM_BREAK_RESOLUTION
+#define DAM_BREAK_RESOLUTION 40
+#endif
+
+namespace isphdem::validation {
+namespace {
+
+// Martin & Moyce (1952), n^2 = 2 (column twice as high as wide): (T, Z).
+const std::vector<std::pair<double, double>> kMartinMoyce = {
+    {0.00, 1.00}, {0.41, 1.11}, {0.84, 1.23}, {1.19, 1.44}, {1.43, 1.67},
+    {1.63, 1.89}, {1.82, 2.11}, {1.97, 2.33}, {2.20, 2.56}, {2.32, 2.78},
+    {2.50, 3.00}, {2.64, 3.22}, {2.82, 3.44}, {2.96, 3.67}};
+
+// Front of the continuous surge: the largest x among fluid particles within 2 dx of the floor
+// that have at least 6 fluid neighbours within 2 dx (a full lattice has 12), plus dx/2. Single
+// spray particles thrown ahead of the toe are not the surge front the experiment filmed.
+double front(const isph::IsphSolver<2>& s, double a, bool connected) {
+  const auto& P = s.particles();
+  const double dx = P.spacing;
+  double xmax = -1e9;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != isph::kFluid || P.x[i][1] >= 2.0 * dx || P.x[i][0] <= xmax) continue;
+    if (connected) {
+      int close = 0;
+      for (std::size_t j = 0; j < P.size(); ++j)
+        close += j != i && P.kind[j] == isph::kFluid && (P.x[j] - P.x[i]).norm() <= 2.0 * dx;
+      if (close < 6) continue;
+    }
+    xmax = P.x[i][0];
+  }
+  return (xmax + 0.5 * dx) / a;
+}
+
+struct DamBreakResult {
+  std::vector<double> z, z_any;  // per table row reached
+  double t_end_scaled = 0.0;     // T reached
+  long steps = 0;
+  std::string failure;
+};
+
+// One run shared by the tests below.
+const DamBreakResult& dam_break() {
+  static const DamBreakResult r = [] {
+    const double a = 0.1, g = 9.81;
+    const double dx = a / DAM_BREAK_RESOLUTION;
+    const CaseFile c = load_example("dam_break_2d", {"particles.spacing=" + std::to_string(dx)});
+    FluidRun<2> run(build_fluid_scene<2>(c), parse_run_settings(c));
+    auto& s = run.solver();
+    const double t_scale = std::sqrt(2.0 * g / a);  // T = t * t_scale
+    DamBreakResult out;
+    try {
+      for (const auto& [T, Z] : kMartinMoyce) {
+        if (T > 0.0) run.run_until(T / t_scale);
+        out.z.push_back(front(s, a, true));
+        out.z_any.push_back(front(s, a, false));
+      }
+      run.run_until(3.0 / t_scale);
+    } catch (const isph::SimulationError& e) {
+      out.failure = e.what();
+    }
+    out.t_end_scaled = s.time() * t_scale;
+    out.steps = s.steps();
+    std::printf("  a/dx = %d, %ld steps, reached T = %.3f\n", DAM_BREAK_RESOLUTION, out.steps,
+                out.t_end_scaled);
+    std::printf("     T   Z (M&M)   Z (surge)  diff     Z (any particle)  diff\n");
+    for (std::size_t k = 0; k < out.z.size(); ++k) {
+      const double ref = kMartinMoyce[k].second;
+      std::printf("  %5.2f   %5.2f    %6.3f  %+6.1f%%    %6.3f          %+6.1f%%\n",
+                  kMartinMoyce[k].first, ref, out.z[k], 100.0 * (out.z[k] - ref) / ref,
+                  out.z_any[k], 100.0 * (out.z_any[k] - ref) / ref);
+    }
+    if (!out.failure.empty()) std::printf("  stopped: %s\n", out.failure.c_str());
+    return out;
+  }();
+  return r;
+}
+
+TEST(DamBreak, RunsStablyToT3) {
+  const auto& r = dam_break();
+  EXPECT_TRUE(r.failure.empty()) << r.failure;
+  EXPECT_GE(r.t_end_scaled, 3.0 - 1e-6);
+}
+
+TEST(DamBreak, SurgeFrontWithinFivePercentOfMartinMoyce) {
+  const auto& r = dam_break();
+  ASSERT_EQ(r.z.size(), kMartinMoyce.size()) << "run stopped early: " << r.failure;
+  double worst = 0.0;
+  for (std::size_t k = 0; k < r.z.size(); ++k)
+    if (kMartinMoyce[k].first <= 2.5)
+      worst = std::max(worst, std::abs(r.z[k] - kMartinMoyce[k].second) / kMartinMoyce[k].second);
+  std::printf("  worst relative difference of the surge front for T <= 2.5: %.1f%%\n",
+              100.0 * worst);
+  EXPECT_LT(worst, 0.05);
+}
+
+}  // namespace
+}  // namespace isphdem::validation
