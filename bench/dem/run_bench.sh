@@ -86,7 +86,7 @@ for np in ${NP:-1 2}; do
   done
   summary+=("$(printf "%-5s %12.3f %12.3f %13.3f %13.3f %s" "$np" "$(med "${as[*]}")" \
     "$(med "${bs[*]}")" "$(med "${rs[*]}")" \
-    "$(py "print(min(${bs[*]// /,}, ${bs[0]}) / min(${as[*]// /,}, ${as[0]}))")" "${rs[*]}")")
+    "$(py "print(min(map(float, '${bs[*]}'.split())) / min(map(float, '${as[*]}'.split())))")" "${rs[*]}")")
 done
 echo
 printf "%-5s %12s %12s %13s %13s %s\n" ranks "liggghts med" "isphdem med" "median ratio" \
