@@ -129,226 +129,31 @@ StepStats IsphSolver<Dim>::step(double dt) {
   if (!(dt > 0.0) || !std::isfinite(dt)) throw SimulationError("time step must be positive");
   update_forcing_kinds();
   update_geometry();
-
-  const int n = static_cast<int>(particles_.size());
-  const double rho0 = config_.density;
-  const double nu = config_.viscosity;
-  auto& P = particles_;
   StepStats stats;
   stats.dt = dt;
   {
     Stopwatch w(timings_.rest);
-    // Velocities seen by fluid particles at wall neighbours. Adami et al. (2012) mirror the
-    // Shepard-averaged fluid velocity through the wall velocity, which assumes that average sits
-    // at the mirror point; for the deeper wall layers it sits much closer to the wall, and the
-    // wall slips (0.6% of the peak in Poiseuille flow). Where the wall geometry is known, the
-    // fluid velocity is extrapolated linearly instead: with d_w the particle's distance to the
-    // wall surface and d' that of the fluid-neighbour centroid, u_g = v_w - (d_w/d')(u~ - v_w).
-    wall_ghost_.resize(n);
-#pragma omp parallel for schedule(static)
-    for (int i = 0; i < n; ++i) {
-      if (P.kind[i] != kWall) {
-        wall_ghost_[i] = P.v[i];
-        continue;
-      }
-      double ws = 0.0;
-      Vec<Dim> vs = Vec<Dim>::Zero(), offset = Vec<Dim>::Zero();
-      for (int k = nb_.begin(i); k < nb_.end(i); ++k) {
-        const int j = nb_.index[k];
-        if (P.kind[j] == kWall) continue;
-        ws += nb_.w[k];
-        vs += nb_.w[k] * P.v[j];
-        offset -= nb_.w[k] * nb_.rij[k];  // x_j - x_i
-      }
-      if (ws <= 0.0) {
-        wall_ghost_[i] = P.v[i];
-        continue;
-      }
-      vs /= ws;
-      offset /= ws;
-      double ratio = 1.0;
-      const Vec<Dim>& nrm = P.normal[i];
-      if (nrm.squaredNorm() > 0.0) {
-        // The wall surface lies at x_w + d_w n, so the centroid is offset.n - d_w inside the fluid.
-        const double dc = std::max(offset.dot(nrm) - P.wall_distance[i], 0.25 * P.spacing);
-        ratio = P.wall_distance[i] / dc;
-      }
-      const Vec<Dim> rel = vs - P.v[i];
-      if (config_.wall == WallSlip::NoSlip) {
-        wall_ghost_[i] = P.v[i] - ratio * rel;
-      } else {  // free slip: tangential velocity copied, normal velocity mirrored
-        const Vec<Dim> rn =
-            nrm.squaredNorm() > 0.0 ? Vec<Dim>(rel.dot(nrm) * nrm) : Vec<Dim>::Zero();
-        wall_ghost_[i] = P.v[i] + (rel - rn) - ratio * rn;
-      }
-    }
-
-    eddy_viscosity_.assign(n, 0.0);
-    if (config_.smagorinsky) {
-      const double cs_dx = config_.smagorinsky_constant * P.spacing;
-#pragma omp parallel for schedule(static)
-      for (int i = 0; i < n; ++i) {
-        if (P.kind[i] != kFluid) continue;
-        const Mat<Dim> g = gradient(nb_, op_, P.v, i);
-        const Mat<Dim> S = 0.5 * (g + g.transpose());
-        eddy_viscosity_[i] = cs_dx * cs_dx * std::sqrt(2.0 * S.squaredNorm());
-      }
-      max_eddy_viscosity_ = *std::max_element(eddy_viscosity_.begin(), eddy_viscosity_.end());
-    }
-
-    u_star_.resize(n);
-#pragma omp parallel for schedule(static)
-    for (int i = 0; i < n; ++i) {
-      if (P.kind[i] == kForcing) {
-        u_star_[i] = zone_of(P.x[i])->velocity;
-        continue;
-      }
-      // Walls take the body acceleration too: their pressure rows impose dp/dn = rho (g - a_w).n,
-      // so after the corrector the normal velocity at the wall is v_w.n again. Leaving u*_w = v_w
-      // would count gravity twice in div u* next to the wall.
-      if (P.kind[i] == kWall) {
-        u_star_[i] = P.v[i] + dt * config_.gravity;
-        continue;
-      }
-      // (Wall tangential velocities are replaced below, once the fluid u* is known.)
-      // The eddy viscosity enters as nu_eff lap u (its gradient term is dropped).
-      u_star_[i] = P.v[i] + dt * ((nu + eddy_viscosity_[i]) * laplacian(nb_, op_, wall_ghost_, i) +
-                                  config_.gravity);
-    }
-
-    // In div u* only the wall-normal velocity is a boundary condition. A no-slip wall's zero
-    // tangential velocity next to fluid sliding along it reads as a divergence wherever the wall
-    // extends beyond the fluid (the toe of a surge, corners), and the pressure answered with a
-    // pocket of suction that pulled the toe into the floor. Walls with known normals therefore
-    // carry the fluid's tangential u* (Shepard average) and their own normal u*.
-#pragma omp parallel for schedule(static)
-    for (int i = 0; i < n; ++i) {
-      if (P.kind[i] != kWall || P.normal[i].squaredNorm() == 0.0) continue;
-      double ws = 0.0;
-      Vec<Dim> us = Vec<Dim>::Zero();
-      for (int k = nb_.begin(i); k < nb_.end(i); ++k) {
-        const int j = nb_.index[k];
-        if (P.kind[j] == kWall) continue;
-        ws += nb_.w[k];
-        us += nb_.w[k] * u_star_[j];
-      }
-      if (ws <= 0.0) continue;
-      us /= ws;
-      const Vec<Dim>& nrm = P.normal[i];
-      const Vec<Dim> own = P.v[i] + dt * config_.gravity;
-      u_star_[i] = us - us.dot(nrm) * nrm + own.dot(nrm) * nrm;
-    }
-
-    // Particles whose whole support lies inside the fluid. Near the free surface the kernel is
-    // truncated: the number-density deficit there is geometry, not compression, so neither the
-    // density-invariance term nor shifting may act on it.
-    full_support_.assign(n, 0);
-#pragma omp parallel for schedule(static)
-    for (int i = 0; i < n; ++i) {
-      if (P.kind[i] == kWall || P.surface[i]) continue;
-      bool near_surface = false;
-      for (int k = nb_.begin(i); k < nb_.end(i) && !near_surface; ++k)
-        near_surface = P.surface[nb_.index[k]];
-      full_support_[i] = !near_surface;
-    }
-
-    rhs_.assign(n, 0.0);
-#pragma omp parallel for schedule(static)
-    for (int i = 0; i < n; ++i) {
-      if (P.kind[i] == kWall) continue;
-      const double density_error = full_support_[i] ? 1.0 - number_density_[i] / n0_ : 0.0;
-      rhs_[i] = rho0 / dt * divergence(nb_, op_, u_star_, i) +
-                config_.alpha_s * rho0 * density_error / (dt * dt);
-    }
+    compute_wall_ghosts();
+    compute_eddy_viscosity();
+    predict(dt);
+    set_wall_u_star(dt);
+    mark_full_support();
+    compute_pressure_rhs(dt);
   }
   {
     Stopwatch w(timings_.assembly);
-    assemble_pressure(P, nb_, op_, rhs_, config_.gravity, rho0, kernel_.h(), system_);
+    assemble_pressure(particles_, nb_, op_, rhs_, config_.gravity, config_.density, kernel_.h(),
+                      system_);
   }
   {
     Stopwatch w(timings_.solve);
-    pressure_ = Eigen::Map<const Eigen::VectorXd>(P.p.data(), n);
-    // Physical pressure scale (hydrostatic head over the box plus dynamic pressure) per row.
-    const double extent = domain_.length().maxCoeff();
-    const double vmax = max_speed();
-    const double p_scale =
-        rho0 * (config_.gravity.norm() * extent + vmax * vmax) * std::sqrt(double(n));
-    const SolveStats s = linear_solver_->solve(system_.A, system_.b, pressure_, p_scale);
-    stats.ppe_iterations = s.iterations;
-    stats.ppe_residual = s.residual;
-    if (!std::isfinite(s.residual) || s.residual > 1e3 * config_.pressure_solver.tolerance)
-      throw SimulationError("pressure solver failed at t = " + fmt(time_) +
-                            " s (relative residual " + fmt(s.residual) + " after " +
-                            std::to_string(s.iterations) +
-                            " iterations): reduce time.dt or check the geometry for isolated "
-                            "particles");
-    Eigen::Map<Eigen::VectorXd>(P.p.data(), n) = pressure_;
+    solve_pressure(stats);
   }
   {
     Stopwatch w(timings_.rest);
-#pragma omp parallel for schedule(static)
-    for (int i = 0; i < n; ++i) {
-      if (P.kind[i] == kWall) continue;
-      if (P.kind[i] == kForcing) {
-        P.v[i] = u_star_[i];
-        continue;
-      }
-      P.v[i] = u_star_[i] - dt / rho0 * gradient(nb_, op_, P.p, i);
-    }
-
-    // Fluid with full support shifts freely; at and next to the free surface only tangentially.
-    shift_mode_.resize(n);
-#pragma omp parallel for schedule(static)
-    for (int i = 0; i < n; ++i) {
-      shift_mode_[i] = P.kind[i] != kFluid ? 0 : (full_support_[i] ? 2 : 1);
-      // Shifting repairs disorder inside the fluid. A splash tip or a toe particle whose support
-      // is mostly wall has no meaningful concentration gradient: its shift came out at the cap,
-      // against the flow, and the Taylor correction turned that into a velocity kick every step.
-      if (shift_mode_[i] == 1) {
-        int nf = 0;
-        for (int k = nb_.begin(i); k < nb_.end(i); ++k) nf += P.kind[nb_.index[k]] != kWall;
-        if (nf < 3 * Dim) shift_mode_[i] = 0;
-      }
-    }
-    compute_shifts(P, nb_, kernel_, config_.shifting, dt, shift_mode_, shift_);
-    // Taylor-correct velocities to the shifted positions (u_star_ reused as scratch), limited so
-    // that no new extremum appears: each component stays within the range of the particle's own
-    // and its fluid neighbours' values. On a truncated support (free surface, splash tip) the
-    // gradient's own coefficient -sum_j G_ij does not vanish, so u_i + (grad u)_i . dr is
-    // u_i (1 - dr . sum_j G_ij) + ...: whenever the shift has a component along -sum_j G_ij the
-    // particle's velocity was amplified by a fixed factor in every step, and the shift itself
-    // grows with |u|. Surface and toe particles ran away exponentially in the step count, which
-    // is why a smaller dt failed earlier. The limiter is inactive in smooth interior flow.
-#pragma omp parallel for schedule(static)
-    for (int i = 0; i < n; ++i) {
-      if (!shift_mode_[i]) {
-        u_star_[i] = P.v[i];
-        continue;
-      }
-      Vec<Dim> u = P.v[i] + gradient(nb_, op_, P.v, i) * shift_[i];
-      Vec<Dim> lo = P.v[i], hi = P.v[i];
-      for (int k = nb_.begin(i); k < nb_.end(i); ++k) {
-        const int j = nb_.index[k];
-        if (P.kind[j] == kWall) continue;
-        lo = lo.cwiseMin(P.v[j]);
-        hi = hi.cwiseMax(P.v[j]);
-      }
-      u_star_[i] = u.cwiseMax(lo).cwiseMin(hi);
-    }
-    P.v.swap(u_star_);
-
-    double vmax = 0.0;
-    for (int i = 0; i < n; ++i) {
-      if (P.kind[i] == kWall) continue;
-      P.x[i] += dt * P.v[i] + shift_[i];
-      keep_off_walls(i);
-      domain_.wrap(P.x[i]);
-      vmax = std::max(vmax, P.v[i].norm());
-      stats.surface_particles += P.surface[i];
-      stats.fluid_volume += P.volume * (full_support_[i] ? n0_ / number_density_[i] : 1.0);
-    }
-    stats.max_speed = vmax;
-    stats.max_eddy_viscosity = max_eddy_viscosity_;
+    correct(dt);
+    shift(dt);
+    advect(dt, stats);
   }
   time_ += dt;
   ++steps_;
@@ -356,10 +161,266 @@ StepStats IsphSolver<Dim>::step(double dt) {
   if (dt * stats.max_speed > particles_.spacing)
     throw SimulationError(
         "time step far beyond the CFL limit at t = " + fmt(time_) + " s: dt = " + fmt(dt) +
-        " s moved particles " + fmt(dt * stats.max_speed / P.spacing) +
+        " s moved particles " + fmt(dt * stats.max_speed / particles_.spacing) +
         " spacings in one step (max |u| = " + fmt(stats.max_speed) +
         " m/s); use time.dt = \"auto\" or a dt below " + fmt(limits().min()) + " s");
   return stats;
+}
+
+template <int Dim>
+void IsphSolver<Dim>::compute_wall_ghosts() {
+  const int n = static_cast<int>(particles_.size());
+  auto& P = particles_;
+  // Velocities seen by fluid particles at wall neighbours. Adami et al. (2012) mirror the
+  // Shepard-averaged fluid velocity through the wall velocity, which assumes that average sits
+  // at the mirror point; for the deeper wall layers it sits much closer to the wall, and the
+  // wall slips (0.6% of the peak in Poiseuille flow). Where the wall geometry is known, the
+  // fluid velocity is extrapolated linearly instead: with d_w the particle's distance to the
+  // wall surface and d' that of the fluid-neighbour centroid, u_g = v_w - (d_w/d')(u~ - v_w).
+  wall_ghost_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    if (P.kind[i] != kWall) {
+      wall_ghost_[i] = P.v[i];
+      continue;
+    }
+    double ws = 0.0;
+    Vec<Dim> vs = Vec<Dim>::Zero(), offset = Vec<Dim>::Zero();
+    for (int k = nb_.begin(i); k < nb_.end(i); ++k) {
+      const int j = nb_.index[k];
+      if (P.kind[j] == kWall) continue;
+      ws += nb_.w[k];
+      vs += nb_.w[k] * P.v[j];
+      offset -= nb_.w[k] * nb_.rij[k];  // x_j - x_i
+    }
+    if (ws <= 0.0) {
+      wall_ghost_[i] = P.v[i];
+      continue;
+    }
+    vs /= ws;
+    offset /= ws;
+    double ratio = 1.0;
+    const Vec<Dim>& nrm = P.normal[i];
+    if (nrm.squaredNorm() > 0.0) {
+      // The wall surface lies at x_w + d_w n, so the centroid is offset.n - d_w inside the fluid.
+      const double dc = std::max(offset.dot(nrm) - P.wall_distance[i], 0.25 * P.spacing);
+      ratio = P.wall_distance[i] / dc;
+    }
+    const Vec<Dim> rel = vs - P.v[i];
+    if (config_.wall == WallSlip::NoSlip) {
+      wall_ghost_[i] = P.v[i] - ratio * rel;
+    } else {  // free slip: tangential velocity copied, normal velocity mirrored
+      const Vec<Dim> rn = nrm.squaredNorm() > 0.0 ? Vec<Dim>(rel.dot(nrm) * nrm) : Vec<Dim>::Zero();
+      wall_ghost_[i] = P.v[i] + (rel - rn) - ratio * rn;
+    }
+  }
+}
+
+template <int Dim>
+void IsphSolver<Dim>::compute_eddy_viscosity() {
+  const int n = static_cast<int>(particles_.size());
+  auto& P = particles_;
+  eddy_viscosity_.assign(n, 0.0);
+  if (config_.smagorinsky) {
+    const double cs_dx = config_.smagorinsky_constant * P.spacing;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      if (P.kind[i] != kFluid) continue;
+      const Mat<Dim> g = gradient(nb_, op_, P.v, i);
+      const Mat<Dim> S = 0.5 * (g + g.transpose());
+      eddy_viscosity_[i] = cs_dx * cs_dx * std::sqrt(2.0 * S.squaredNorm());
+    }
+    max_eddy_viscosity_ = *std::max_element(eddy_viscosity_.begin(), eddy_viscosity_.end());
+  }
+}
+
+template <int Dim>
+void IsphSolver<Dim>::predict(double dt) {
+  const int n = static_cast<int>(particles_.size());
+  auto& P = particles_;
+  const double nu = config_.viscosity;
+  u_star_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    if (P.kind[i] == kForcing) {
+      u_star_[i] = zone_of(P.x[i])->velocity;
+      continue;
+    }
+    // Walls take the body acceleration too: their pressure rows impose dp/dn = rho (g - a_w).n,
+    // so after the corrector the normal velocity at the wall is v_w.n again. Leaving u*_w = v_w
+    // would count gravity twice in div u* next to the wall.
+    if (P.kind[i] == kWall) {
+      u_star_[i] = P.v[i] + dt * config_.gravity;
+      continue;
+    }
+    // (Wall tangential velocities are replaced below, once the fluid u* is known.)
+    // The eddy viscosity enters as nu_eff lap u (its gradient term is dropped).
+    u_star_[i] = P.v[i] + dt * ((nu + eddy_viscosity_[i]) * laplacian(nb_, op_, wall_ghost_, i) +
+                                config_.gravity);
+  }
+}
+
+template <int Dim>
+void IsphSolver<Dim>::set_wall_u_star(double dt) {
+  const int n = static_cast<int>(particles_.size());
+  auto& P = particles_;
+  // In div u* only the wall-normal velocity is a boundary condition. A no-slip wall's zero
+  // tangential velocity next to fluid sliding along it reads as a divergence wherever the wall
+  // extends beyond the fluid (the toe of a surge, corners), and the pressure answered with a
+  // pocket of suction that pulled the toe into the floor. Walls with known normals therefore
+  // carry the fluid's tangential u* (Shepard average) and their own normal u*.
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    if (P.kind[i] != kWall || P.normal[i].squaredNorm() == 0.0) continue;
+    double ws = 0.0;
+    Vec<Dim> us = Vec<Dim>::Zero();
+    for (int k = nb_.begin(i); k < nb_.end(i); ++k) {
+      const int j = nb_.index[k];
+      if (P.kind[j] == kWall) continue;
+      ws += nb_.w[k];
+      us += nb_.w[k] * u_star_[j];
+    }
+    if (ws <= 0.0) continue;
+    us /= ws;
+    const Vec<Dim>& nrm = P.normal[i];
+    const Vec<Dim> own = P.v[i] + dt * config_.gravity;
+    u_star_[i] = us - us.dot(nrm) * nrm + own.dot(nrm) * nrm;
+  }
+}
+
+template <int Dim>
+void IsphSolver<Dim>::mark_full_support() {
+  const int n = static_cast<int>(particles_.size());
+  auto& P = particles_;
+  // Particles whose whole support lies inside the fluid. Near the free surface the kernel is
+  // truncated: the number-density deficit there is geometry, not compression, so neither the
+  // density-invariance term nor shifting may act on it.
+  full_support_.assign(n, 0);
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    if (P.kind[i] == kWall || P.surface[i]) continue;
+    bool near_surface = false;
+    for (int k = nb_.begin(i); k < nb_.end(i) && !near_surface; ++k)
+      near_surface = P.surface[nb_.index[k]];
+    full_support_[i] = !near_surface;
+  }
+}
+
+template <int Dim>
+void IsphSolver<Dim>::compute_pressure_rhs(double dt) {
+  const int n = static_cast<int>(particles_.size());
+  auto& P = particles_;
+  const double rho0 = config_.density;
+  rhs_.assign(n, 0.0);
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    if (P.kind[i] == kWall) continue;
+    const double density_error = full_support_[i] ? 1.0 - number_density_[i] / n0_ : 0.0;
+    rhs_[i] = rho0 / dt * divergence(nb_, op_, u_star_, i) +
+              config_.alpha_s * rho0 * density_error / (dt * dt);
+  }
+}
+
+template <int Dim>
+void IsphSolver<Dim>::solve_pressure(StepStats& stats) {
+  const int n = static_cast<int>(particles_.size());
+  auto& P = particles_;
+  const double rho0 = config_.density;
+  pressure_ = Eigen::Map<const Eigen::VectorXd>(P.p.data(), n);
+  // Physical pressure scale (hydrostatic head over the box plus dynamic pressure) per row.
+  const double extent = domain_.length().maxCoeff();
+  const double vmax = max_speed();
+  const double p_scale =
+      rho0 * (config_.gravity.norm() * extent + vmax * vmax) * std::sqrt(double(n));
+  const SolveStats s = linear_solver_->solve(system_.A, system_.b, pressure_, p_scale);
+  stats.ppe_iterations = s.iterations;
+  stats.ppe_residual = s.residual;
+  if (!std::isfinite(s.residual) || s.residual > 1e3 * config_.pressure_solver.tolerance)
+    throw SimulationError("pressure solver failed at t = " + fmt(time_) + " s (relative residual " +
+                          fmt(s.residual) + " after " + std::to_string(s.iterations) +
+                          " iterations): reduce time.dt or check the geometry for isolated "
+                          "particles");
+  Eigen::Map<Eigen::VectorXd>(P.p.data(), n) = pressure_;
+}
+
+template <int Dim>
+void IsphSolver<Dim>::correct(double dt) {
+  const int n = static_cast<int>(particles_.size());
+  auto& P = particles_;
+  const double rho0 = config_.density;
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    if (P.kind[i] == kWall) continue;
+    if (P.kind[i] == kForcing) {
+      P.v[i] = u_star_[i];
+      continue;
+    }
+    P.v[i] = u_star_[i] - dt / rho0 * gradient(nb_, op_, P.p, i);
+  }
+}
+
+template <int Dim>
+void IsphSolver<Dim>::shift(double dt) {
+  const int n = static_cast<int>(particles_.size());
+  auto& P = particles_;
+  // Fluid with full support shifts freely; at and next to the free surface only tangentially.
+  shift_mode_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    shift_mode_[i] = P.kind[i] != kFluid ? 0 : (full_support_[i] ? 2 : 1);
+    // Shifting repairs disorder inside the fluid. A splash tip or a toe particle whose support
+    // is mostly wall has no meaningful concentration gradient: its shift came out at the cap,
+    // against the flow, and the Taylor correction turned that into a velocity kick every step.
+    if (shift_mode_[i] == 1) {
+      int nf = 0;
+      for (int k = nb_.begin(i); k < nb_.end(i); ++k) nf += P.kind[nb_.index[k]] != kWall;
+      if (nf < 3 * Dim) shift_mode_[i] = 0;
+    }
+  }
+  compute_shifts(P, nb_, kernel_, config_.shifting, dt, shift_mode_, shift_);
+  // Taylor-correct velocities to the shifted positions (u_star_ reused as scratch), limited so
+  // that no new extremum appears: each component stays within the range of the particle's own
+  // and its fluid neighbours' values. On a truncated support (free surface, splash tip) the
+  // gradient's own coefficient -sum_j G_ij does not vanish, so u_i + (grad u)_i . dr is
+  // u_i (1 - dr . sum_j G_ij) + ...: whenever the shift has a component along -sum_j G_ij the
+  // particle's velocity was amplified by a fixed factor in every step, and the shift itself
+  // grows with |u|. Surface and toe particles ran away exponentially in the step count, which
+  // is why a smaller dt failed earlier. The limiter is inactive in smooth interior flow.
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    if (!shift_mode_[i]) {
+      u_star_[i] = P.v[i];
+      continue;
+    }
+    Vec<Dim> u = P.v[i] + gradient(nb_, op_, P.v, i) * shift_[i];
+    Vec<Dim> lo = P.v[i], hi = P.v[i];
+    for (int k = nb_.begin(i); k < nb_.end(i); ++k) {
+      const int j = nb_.index[k];
+      if (P.kind[j] == kWall) continue;
+      lo = lo.cwiseMin(P.v[j]);
+      hi = hi.cwiseMax(P.v[j]);
+    }
+    u_star_[i] = u.cwiseMax(lo).cwiseMin(hi);
+  }
+  P.v.swap(u_star_);
+}
+
+template <int Dim>
+void IsphSolver<Dim>::advect(double dt, StepStats& stats) {
+  const int n = static_cast<int>(particles_.size());
+  auto& P = particles_;
+  double vmax = 0.0;
+  for (int i = 0; i < n; ++i) {
+    if (P.kind[i] == kWall) continue;
+    P.x[i] += dt * P.v[i] + shift_[i];
+    keep_off_walls(i);
+    domain_.wrap(P.x[i]);
+    vmax = std::max(vmax, P.v[i].norm());
+    stats.surface_particles += P.surface[i];
+    stats.fluid_volume += P.volume * (full_support_[i] ? n0_ / number_density_[i] : 1.0);
+  }
+  stats.max_speed = vmax;
+  stats.max_eddy_viscosity = max_eddy_viscosity_;
 }
 
 template <int Dim>

@@ -110,7 +110,18 @@ class IsphSolver {
   const StepTimings& timings() const { return timings_; }
 
  private:
+  // The phases of step(), in order.
   void update_geometry();
+  void compute_wall_ghosts();
+  void compute_eddy_viscosity();
+  void predict(double dt);
+  void set_wall_u_star(double dt);
+  void mark_full_support();
+  void compute_pressure_rhs(double dt);
+  void solve_pressure(StepStats& stats);
+  void correct(double dt);
+  void shift(double dt);
+  void advect(double dt, StepStats& stats);
   void update_forcing_kinds();
   void keep_off_walls(int i);
   const ForcingZone<Dim>* zone_of(const Vec<Dim>& x) const;
