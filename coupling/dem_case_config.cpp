@@ -96,6 +96,16 @@ DemCaseConfig parse_dem_table(const toml::table& dem, const std::filesystem::pat
       c.variables.emplace_back(name, as_text("variables." + name, v));
     }
   }
+  // LIGGGHTS resolves paths inside the script (include, read_restart, meshes) from the working
+  // directory, not the script's; ${case_dir} lets a script name the files beside it.
+  const bool has_case_dir = std::any_of(c.variables.begin(), c.variables.end(),
+                                        [](const auto& v) { return v.first == "case_dir"; });
+  if (!has_case_dir) {
+    const std::filesystem::path dir = case_dir.empty() ? std::filesystem::path(".") : case_dir;
+    c.variables.emplace_back("case_dir",
+                             std::filesystem::absolute(dir).lexically_normal().string());
+    std::sort(c.variables.begin(), c.variables.end());
+  }
   if (dem.contains("log")) c.log = string_key(dem, "log");
   if (dem.contains("screen")) {
     c.screen = string_key(dem, "screen");

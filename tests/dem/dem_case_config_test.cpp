@@ -45,18 +45,28 @@ TEST_F(DemTable, ParsesAllKeys) {
                            dir_);
   EXPECT_EQ(c.script, dir_ / "in.test");
   EXPECT_EQ(c.substeps, 100);
-  ASSERT_EQ(c.variables.size(), 4u);
-  // Sorted by name.
-  EXPECT_EQ(c.variables[0], (std::pair<std::string, std::string>{"dmin", "0.001"}));
-  EXPECT_EQ(c.variables[1].second, "1");
-  EXPECT_EQ(c.variables[2].second, "500");
-  EXPECT_EQ(c.variables[3].second, "fine");
+  ASSERT_EQ(c.variables.size(), 5u);
+  // Sorted by name; case_dir added for the script's own files.
+  const std::string dir = fs::absolute(dir_).lexically_normal().string();
+  EXPECT_EQ(c.variables[0], (std::pair<std::string, std::string>{"case_dir", dir}));
+  EXPECT_EQ(c.variables[1], (std::pair<std::string, std::string>{"dmin", "0.001"}));
+  EXPECT_EQ(c.variables[2].second, "1");
+  EXPECT_EQ(c.variables[3].second, "500");
+  EXPECT_EQ(c.variables[4].second, "fine");
   auto args = c.liggghts_args("/out");
-  std::vector<std::string> want = {"-var", "dmin",         "0.001",   "-var",     "flag", "1",
-                                   "-var", "nGrains",      "500",     "-var",     "name", "fine",
-                                   "-log", "/out/log.dem", "-screen", "/dev/null"};
+  std::vector<std::string> want = {"-var",    "case_dir",     dir,       "-var",     "dmin",
+                                   "0.001",   "-var",         "flag",    "1",        "-var",
+                                   "nGrains", "500",          "-var",    "name",     "fine",
+                                   "-log",    "/out/log.dem", "-screen", "/dev/null"};
   EXPECT_EQ(args, want);
   EXPECT_EQ(isphdem::dem_table_keys().size(), 5u);
+}
+
+TEST_F(DemTable, CaseDirVariableCanBeOverridden) {
+  auto c = parse_dem_table(
+      table("script = \"in.test\"\nsubsteps = 1\n[variables]\ncase_dir = \"/x\"\n"), dir_);
+  ASSERT_EQ(c.variables.size(), 1u);
+  EXPECT_EQ(c.variables[0], (std::pair<std::string, std::string>{"case_dir", "/x"}));
 }
 
 TEST_F(DemTable, UnknownKeySuggestsClosest) {
