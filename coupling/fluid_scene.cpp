@@ -269,8 +269,9 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
   cfg.pressure_solver.preconditioner =
       c.string("solver.preconditioner", cfg.pressure_solver.preconditioner);
   if (cfg.pressure_solver.preconditioner != "ilut" &&
+      cfg.pressure_solver.preconditioner != "ilu0" &&
       cfg.pressure_solver.preconditioner != "jacobi")
-    throw CaseError("'solver.preconditioner' must be \"ilut\" or \"jacobi\"");
+    throw CaseError("'solver.preconditioner' must be \"jacobi\", \"ilu0\" or \"ilut\"");
   cfg.pressure_solver.max_iterations =
       static_cast<int>(c.integer("solver.max_iterations", cfg.pressure_solver.max_iterations));
   return s;

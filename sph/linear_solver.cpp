@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "ilu0_preconditioner.hpp"
+
 namespace isph {
 
 namespace {
@@ -49,8 +51,10 @@ std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverConfig& confi
     return std::make_unique<EigenBiCGSTAB<Eigen::DiagonalPreconditioner<double>>>(config);
   if (config.preconditioner == "ilut")
     return std::make_unique<EigenBiCGSTAB<Eigen::IncompleteLUT<double>>>(config);
+  if (config.preconditioner == "ilu0")
+    return std::make_unique<EigenBiCGSTAB<Ilu0Preconditioner>>(config);
   throw std::invalid_argument("unknown preconditioner '" + config.preconditioner +
-                              "': use \"jacobi\" or \"ilut\"");
+                              "': use \"jacobi\", \"ilu0\" or \"ilut\"");
 }
 
 }  // namespace isph
