@@ -14,6 +14,7 @@
 # usage: bench/fluid/run_taylor_green.sh [ISPHDEM] [WORKDIR]
 #   env: SIZES="spacing:steps ..." (default "0.01:300 0.005:100 0.0025:25")
 #        THREADS="1 2"   ILUT_STEPS=10 (the 40k case once with the ILUT preconditioner; 0: skip)
+#        ILU0=1 (every size and thread count also with the ILU(0) preconditioner; 0: skip)
 #        LOAD_MAX=0.7    LOAD_WAIT=300    OTHER_MAX=0.1    TRIES=4
 #        TABLE_ONLY=1: no runs, only results.md and results.png again from results.csv
 set -euo pipefail
@@ -25,6 +26,7 @@ case_file=$root/examples/taylor_green_2d/case.toml
 SIZES=${SIZES:-"0.01:300 0.005:100 0.0025:25"}
 THREADS=${THREADS:-"1 2"}
 ILUT_STEPS=${ILUT_STEPS:-10}
+ILU0=${ILU0:-1}
 LOAD_MAX=${LOAD_MAX:-0.7}
 LOAD_WAIT=${LOAD_WAIT:-300}
 OTHER_MAX=${OTHER_MAX:-0.1}
@@ -107,6 +109,9 @@ print(f'{u + s:.1f}')")
 
 for s in $SIZES; do
   for nt in $THREADS; do run "${s%%:*}" "${s##*:}" "$nt" jacobi; done
+  if ((ILU0)); then
+    for nt in $THREADS; do run "${s%%:*}" "${s##*:}" "$nt" ilu0; done
+  fi
 done
 if ((ILUT_STEPS > 0)); then run 0.005 "$ILUT_STEPS" 1 ilut; fi
 fi
