@@ -10,7 +10,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 rows = list(csv.DictReader(open(sys.argv[1])))
 fig, (a, b) = plt.subplots(1, 2, figsize=(10, 4))
-for pc, marker in (("jacobi", "o"), ("ilut", "s")):
+for pc, marker in (("jacobi", "o"), ("ilu0", "^"), ("ilut", "s")):
     for nt in sorted({r["threads"] for r in rows if r["preconditioner"] == pc}):
         sel = sorted((r for r in rows if r["preconditioner"] == pc and r["threads"] == nt),
                      key=lambda r: int(r["particles"]))
