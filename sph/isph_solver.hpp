@@ -18,6 +18,7 @@
 #include "neighbors.hpp"
 #include "operators.hpp"
 #include "particles.hpp"
+#include "porous_medium.hpp"
 #include "pressure_equation.hpp"
 #include "shifting.hpp"
 #include "time_step.hpp"
@@ -108,6 +109,7 @@ class IsphSolver {
   long steps() const { return steps_; }
   double max_speed() const;
   const StepTimings& timings() const { return timings_; }
+  const PorousMedium<Dim>& porous() const { return porous_; }
 
  private:
   // The phases of step(), in order.
@@ -142,6 +144,7 @@ class IsphSolver {
   Neighbors<Dim> nb_;
   Operators<Dim> op_;
   PressureSystem<Dim> system_;
+  PorousMedium<Dim> porous_;
   std::vector<double> number_density_, divergence_r_, rhs_, eddy_viscosity_;
   double max_eddy_viscosity_ = 0.0;
   std::vector<Vec<Dim>> u_star_, wall_ghost_, shift_;
