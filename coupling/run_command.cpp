@@ -280,9 +280,7 @@ int run_coupled(const CaseFile& c, const Arguments& args) {
   const RunSettings settings = parse_run_settings(c);
   const DemCaseConfig dem = dem_config(c);
   FluidScene<Dim> scene = build_fluid_scene<Dim>(c);
-  const double h = scene.config.smoothing_ratio * scene.particles.spacing;
-  std::vector<std::unique_ptr<CouplingStage<Dim>>> stages;
-  stages.push_back(make_unresolved_coupling<Dim>(c, h, scene.config.viscosity));
+  auto stages = make_coupling_stages<Dim>(c, scene, settings.fixed_dt.value_or(0.0));
   Vec3 up{0.0, 0.0, 0.0};
   {
     isph::Vec<Dim> g = scene.config.gravity;
@@ -295,7 +293,9 @@ int run_coupled(const CaseFile& c, const Arguments& args) {
   CoupledRun<Dim> run(std::move(scene), settings, backend, dem.substeps, std::move(stages));
   auto& solver = run.solver();
   const auto& P = solver.particles();
-  const auto* unresolved = dynamic_cast<const UnresolvedCoupling<Dim>*>(run.stages()[0].get());
+  const UnresolvedCoupling<Dim>* unresolved = nullptr;
+  for (const auto& st : run.stages())
+    if (!unresolved) unresolved = dynamic_cast<const UnresolvedCoupling<Dim>*>(st.get());
   if (talk) {
     std::printf(
         "isphdem run: %s (%dD, coupled)\n  fluid: %zu fluid, %zu wall particles; dx = %g m\n"

@@ -1,5 +1,7 @@
 #include "unresolved_case.hpp"
 
+#include "mean_flow_drive.hpp"
+
 namespace isphdem {
 
 std::vector<std::string> unresolved_keys() {
@@ -50,6 +52,33 @@ std::unique_ptr<UnresolvedCoupling<Dim>> make_unresolved_coupling(const CaseFile
     throw CaseError(std::string("[unresolved]: ") + e.what());
   }
 }
+
+template <int Dim>
+std::vector<std::unique_ptr<CouplingStage<Dim>>> make_coupling_stages(const CaseFile& c,
+                                                                      const FluidScene<Dim>& scene,
+                                                                      double dt) {
+  std::vector<std::unique_ptr<CouplingStage<Dim>>> stages;
+  const double h = scene.config.smoothing_ratio * scene.particles.spacing;
+  stages.push_back(make_unresolved_coupling<Dim>(c, h, scene.config.viscosity));
+  if (c.string("inflow.mode", "zone") == "mean_flow") {
+    isph::Vec<Dim> dir = -scene.config.gravity;
+    if (c.has("inflow.direction")) {
+      const auto d = c.numbers("inflow.direction", Dim);
+      for (int a = 0; a < Dim; ++a) dir[a] = d[a];
+    }
+    if (!(dir.norm() > 0))
+      throw CaseError(
+          "'inflow.direction' must be a non-zero vector (or set gravity for \"upward\")");
+    stages.push_back(std::make_unique<MeanFlowDrive<Dim>>(
+        c.number("inflow.velocity") * dir.normalized(), scene.config.gravity, dt));
+  }
+  return stages;
+}
+
+template std::vector<std::unique_ptr<CouplingStage<2>>> make_coupling_stages<2>(
+    const CaseFile&, const FluidScene<2>&, double);
+template std::vector<std::unique_ptr<CouplingStage<3>>> make_coupling_stages<3>(
+    const CaseFile&, const FluidScene<3>&, double);
 
 template std::unique_ptr<UnresolvedCoupling<2>> make_unresolved_coupling<2>(const CaseFile&, double,
                                                                             double);

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "case_file.hpp"
+#include "fluid_scene.hpp"
 #include "unresolved_coupling.hpp"
 
 namespace isphdem {
@@ -28,6 +29,14 @@ std::vector<std::string> unresolved_keys();
 template <int Dim>
 std::unique_ptr<UnresolvedCoupling<Dim>> make_unresolved_coupling(const CaseFile& c, double fluid_h,
                                                                   double viscosity);
+
+// All stages of a coupled case, in the order the driver runs them: the unresolved coupling,
+// then, with [inflow] mode = "mean_flow", the MeanFlowDrive (mean_flow_drive.hpp). A resolved
+// (PMS) stage is appended here when the case has clumps.
+template <int Dim>
+std::vector<std::unique_ptr<CouplingStage<Dim>>> make_coupling_stages(const CaseFile& c,
+                                                                      const FluidScene<Dim>& scene,
+                                                                      double dt);
 
 }  // namespace isphdem
 

@@ -110,6 +110,8 @@ class IsphSolver {
   double max_speed() const;
   const StepTimings& timings() const { return timings_; }
   const PorousMedium<Dim>& porous() const { return porous_; }
+  // Body acceleration for the coming steps (a flow-rate drive adjusts it between steps).
+  void set_gravity(const Vec<Dim>& g) { config_.gravity = g; }
 
  private:
   // The phases of step(), in order.

@@ -44,12 +44,9 @@ CoupledCase<Dim> make_coupled_case(const CaseFile& c, const std::filesystem::pat
   const RunSettings settings = parse_run_settings(c);
   const DemCaseConfig dem = parse_dem_table(*c.table()["dem"].as_table(), c.directory());
   FluidScene<Dim> scene = build_fluid_scene<Dim>(c);
-  const double h = scene.config.smoothing_ratio * scene.particles.spacing;
-  std::vector<std::unique_ptr<CouplingStage<Dim>>> stages;
-  auto stage = make_unresolved_coupling<Dim>(c, h, scene.config.viscosity);
+  auto stages = make_coupling_stages<Dim>(c, scene, settings.fixed_dt.value_or(0.0));
   CoupledCase<Dim> out;
-  out.unresolved = stage.get();
-  stages.push_back(std::move(stage));
+  out.unresolved = dynamic_cast<const UnresolvedCoupling<Dim>*>(stages.front().get());
   out.backend = std::make_unique<LiggghtsBackend>(dem.liggghts_args(out_dir));
   out.backend->initialize({dem.script, {}});
   out.run = std::make_unique<CoupledRun<Dim>>(std::move(scene), settings, *out.backend,
