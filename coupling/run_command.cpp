@@ -279,6 +279,11 @@ int run_coupled(const CaseFile& c, const Arguments& args) {
   const bool talk = rank == 0 && !args.quiet;
   const RunSettings settings = parse_run_settings(c);
   const DemCaseConfig dem = dem_config(c);
+  // Checked here as well as in CoupledRun so that it stops before LIGGGHTS writes its screen.
+  if (!settings.fixed_dt)
+    throw CaseError(
+        "a coupled case needs a fixed fluid step: set time.dt = [dem] substeps x the "
+        "script's DEM timestep (not \"auto\")");
   FluidScene<Dim> scene = build_fluid_scene<Dim>(c);
   auto stages = make_coupling_stages<Dim>(c, scene, settings.fixed_dt.value_or(0.0));
   Vec3 up{0.0, 0.0, 0.0};
