@@ -6,6 +6,8 @@
 //   pressure   lap p = rho0/dt div u* + alpha_s (rho0 - rho_i)/dt^2
 //   corrector  u = u* - dt/rho0 grad p
 //   advection  x += dt u, plus particle shifting
+// In porous regions (eps < 1 or K > 0 on some particle) the predictor, the PPE coefficient and
+// the corrector take the Darcy-Brinkman form of porous_medium.hpp.
 #include <memory>
 #include <stdexcept>
 #include <string>
