@@ -17,7 +17,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "case_path.hpp"
 #include "drag_law.hpp"
+#include "fluid_run.hpp"
 #include "isph_solver.hpp"
 #include "lattice.hpp"
 #include "porosity_map.hpp"
@@ -164,6 +166,44 @@ TEST(PorousBed, ErgunAtHalfCentimetrePerSecond) { check(0.005, PorositySource::P
 TEST(PorousBed, ErgunAtTwoCentimetresPerSecond) { check(0.02, PorositySource::Profile, 2.3892); }
 TEST(PorousBed, ErgunFromGrainLatticeAtTwoCentimetresPerSecond) {
   check(0.02, PorositySource::Grains, 2.3892);
+}
+
+// A bed resting on the floor of a closed tank (examples/hydrostatic_2d, water depth 0.2 m, a
+// bed of eps = 0.4 in the lower half, grains at rest): still water must stay still and
+// hydrostatic, p = rho g (H - y) within 1%, through the bed and next to the walls. This checks
+// the wall side of the porous step (walls carry c g in u* and Shepard-averaged c in the PPE).
+TEST(PorousBed, BedOnTheFloorOfATankStaysHydrostatic) {
+  const CaseFile c = load_example("hydrostatic_2d", {});
+  FluidRun<2> run(build_fluid_scene<2>(c), parse_run_settings(c));
+  auto& s = run.solver();
+  const SeedResistance law{SeedResistanceParameters{}};
+  const double H = 0.2, rho = 1000.0, g = 9.81, dx = s.particles().spacing;
+  auto eps_of = [&](double y) { return 1.0 - 0.6 * 0.5 * (1.0 - std::tanh((y - 0.1) / (2 * dx))); };
+  double worst = 0, vmax = 0;
+  for (int step = 1; step <= 1000; ++step) {
+    auto& P = s.particles();
+    std::vector<double> eps(P.size());
+    for (std::size_t i = 0; i < P.size(); ++i) eps[i] = eps_of(P.x[i][1]);
+    set_porous_terms(P, eps, law);
+    run.advance();
+  }
+  const auto& P = s.particles();
+  double ytop = -1e9;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.kind[i] == isph::kFluid) ytop = std::max(ytop, P.x[i][1]);
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != isph::kFluid) continue;
+    vmax = std::max(vmax, P.v[i].norm());
+    const double depth = ytop - P.x[i][1];
+    if (depth >= 3 * dx)
+      worst = std::max(worst, std::abs(P.p[i] - rho * g * depth) / (rho * g * depth));
+  }
+  std::printf(
+      "bed in a tank after %ld steps (t = %.2f s): largest pressure error %.3f%%, "
+      "largest Darcy speed %.2e m/s (H = %.2f m)\n",
+      s.steps(), s.time(), 100 * worst, vmax, H);
+  EXPECT_LT(worst, 0.01);
+  EXPECT_LT(vmax, 1e-3);
 }
 
 }  // namespace
