@@ -43,6 +43,14 @@ double relative_expansion(double velocity) {
       h_max = std::max(h_max, bed_height(cc.backend->state()));
   });
   const double h = bed_height(cc.backend->state());
+  // The mean-flow drive holds the mean Darcy velocity at the inflow velocity.
+  double mean_v = 0;
+  const auto& P = cc.run->solver().particles();
+  for (const auto& u : P.v) mean_v += u[1];
+  mean_v /= static_cast<double>(P.size());
+  std::printf("U = %s m/s: mean Darcy velocity %.5f m/s (error %.2f%%)\n", v, mean_v,
+              100 * std::abs(mean_v / velocity - 1));
+  EXPECT_NEAR(mean_v, velocity, 0.01 * velocity);
   const auto& t = cc.run->timings();
   std::printf(
       "U = %s m/s: bed height %.3f mm -> %.3f mm (%+.1f%%, largest %.3f mm) at t = %.2f s; "
