@@ -48,7 +48,8 @@ std::vector<std::string> fluid_scene_keys() {
           "inflow.min",
           "inflow.max",
           "inflow.velocity",
-          "inflow.direction"};
+          "inflow.direction",
+          "inflow.mode"};
 }
 
 int case_dimension(const CaseFile& c) {
@@ -246,7 +247,12 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
   cfg.smagorinsky = c.boolean("solver.smagorinsky", cfg.smagorinsky);
   cfg.smagorinsky_constant = c.positive("solver.smagorinsky_constant", cfg.smagorinsky_constant);
 
-  if (c.has("inflow")) {
+  const std::string inflow_mode = c.string("inflow.mode", "zone");
+  if (inflow_mode != "zone" && inflow_mode != "mean_flow")
+    throw CaseError(
+        "'inflow.mode' must be \"zone\" (a forcing zone [min, max]) or \"mean_flow\" "
+        "(a body force holding the mean Darcy velocity; coupled periodic columns)");
+  if (c.has("inflow") && inflow_mode == "zone") {
     // The seed's forcing zone: fluid inside [min, max] moves at `velocity` (m/s) along
     // `direction` (default: against gravity, i.e. upward).
     isph::ForcingZone<Dim> z;

@@ -3,6 +3,7 @@
 #include <mpi.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -11,7 +12,9 @@
 #include <vector>
 
 #include "case_file.hpp"
+#include "coupled_run.hpp"
 #include "dem_case_config.hpp"
+#include "dem_liggghts_backend.hpp"
 #include "dem_run_case.hpp"
 #include "dem_snapshot.hpp"
 #include "diagnostics_writer.hpp"
@@ -21,6 +24,7 @@
 #include "progress_line.hpp"
 #include "run_settings.hpp"
 #include "snapshot_writer.hpp"
+#include "unresolved_case.hpp"
 
 namespace isphdem {
 
@@ -77,6 +81,8 @@ std::vector<std::string> known_keys() {
   const auto r = run_settings_keys();
   k.insert(k.end(), r.begin(), r.end());
   for (const auto& d : dem_table_keys()) k.push_back("dem." + d + (d == "variables" ? ".*" : ""));
+  const auto u = unresolved_keys();
+  k.insert(k.end(), u.begin(), u.end());
   return k;
 }
 
@@ -241,6 +247,158 @@ int run_case(const CaseFile& c, const Arguments& args) {
   return 0;
 }
 
+// Height of the fine-grain bed: the 95th percentile of the grain centres' heights along -g
+// (the top of the bed without the few grains thrown up above it), or the largest height when
+// there are fewer than 20 grains. NaN without grains.
+double bed_height(const DemState& state, const Vec3& up) {
+  std::vector<double> h;
+  for (const auto& a : state.atoms)
+    if (a.body == -1) h.push_back(a.x[0] * up[0] + a.x[1] * up[1] + a.x[2] * up[2]);
+  if (h.empty()) return std::nan("");
+  std::sort(h.begin(), h.end());
+  if (h.size() < 20) return h.back();
+  return h[static_cast<std::size_t>(0.95 * double(h.size() - 1))];
+}
+
+DemCaseConfig dem_config(const CaseFile& c) {
+  const auto* table = c.table()["dem"].as_table();
+  if (!table) throw CaseError("'dem' must be a table: [dem] with script and substeps");
+  try {
+    return parse_dem_table(*table, c.directory());
+  } catch (const std::runtime_error& e) {
+    throw CaseError(e.what());
+  }
+}
+
+// A case with [fluid] and [dem]: fine grains (free spheres) coupled unresolved. The fluid is
+// replicated on every rank (the DEM state is gathered to all); rank 0 writes the output.
+template <int Dim>
+int run_coupled(const CaseFile& c, const Arguments& args) {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  const bool talk = rank == 0 && !args.quiet;
+  const RunSettings settings = parse_run_settings(c);
+  const DemCaseConfig dem = dem_config(c);
+  // Checked here as well as in CoupledRun so that it stops before LIGGGHTS writes its screen.
+  if (!settings.fixed_dt)
+    throw CaseError(
+        "a coupled case needs a fixed fluid step: set time.dt = [dem] substeps x the "
+        "script's DEM timestep (not \"auto\")");
+  FluidScene<Dim> scene = build_fluid_scene<Dim>(c);
+  auto stages = make_coupling_stages<Dim>(c, scene, settings.fixed_dt.value_or(0.0));
+  Vec3 up{0.0, 0.0, 0.0};
+  {
+    isph::Vec<Dim> g = scene.config.gravity;
+    if (g.norm() == 0.0) g[Dim - 1] = -1.0;
+    for (int a = 0; a < Dim; ++a) up[a] = -g[a] / g.norm();
+  }
+  if (rank == 0) fs::create_directories(args.out);
+  LiggghtsBackend backend(dem.liggghts_args(args.out));
+  backend.initialize({dem.script, {}});
+  CoupledRun<Dim> run(std::move(scene), settings, backend, dem.substeps, std::move(stages));
+  auto& solver = run.solver();
+  const auto& P = solver.particles();
+  const UnresolvedCoupling<Dim>* unresolved = nullptr;
+  for (const auto& st : run.stages())
+    if (!unresolved) unresolved = dynamic_cast<const UnresolvedCoupling<Dim>*>(st.get());
+  if (talk) {
+    std::printf(
+        "isphdem run: %s (%dD, coupled)\n  fluid: %zu fluid, %zu wall particles; dx = %g m\n"
+        "  DEM: %s, %zu atoms; fluid dt %g s = %d x DEM dt %g s\n  output: %s every %g s to "
+        "t = %g s\n",
+        c.path().string().c_str(), Dim, P.count(isph::kFluid), P.count(isph::kWall), P.spacing,
+        dem.script.string().c_str(), backend.state().atoms.size(), run.dt(), run.substeps(),
+        backend.timestep(), args.out.string().c_str(), settings.output_interval, settings.t_end);
+    std::fflush(stdout);
+  }
+  std::unique_ptr<SnapshotWriter> writer;
+  std::unique_ptr<DiagnosticsWriter> diagnostics;
+  if (rank == 0) {
+    writer = std::make_unique<SnapshotWriter>(args.out);
+    std::ofstream f(args.out / "case_used.toml");
+    f << "# " << c.path().string() << " with the overrides of this run\n" << c.table() << "\n";
+    diagnostics = std::make_unique<DiagnosticsWriter>(
+        args.out / "diagnostics.csv",
+        std::vector<std::string>{"time", "step", "wall_seconds", "ppe_iterations", "max_speed",
+                                 "dt", "atoms", "bed_height", "max_grain_speed", "min_porosity",
+                                 "floored_porosity", "drag_total_up", "fluid_resistance_up",
+                                 "dem_seconds", "coupling_seconds", "fluid_seconds"});
+  }
+  auto snapshot = [&]() {
+    const DemState& state = backend.state();  // collective
+    if (rank != 0) return;
+    Snapshot s;
+    s.step = solver.steps();
+    s.time = solver.time();
+    add_fluid_group(P, s);
+    HydroLoads hydro;
+    const DemLoads& l = run.loads();
+    for (std::size_t k = 0; k < l.atom_tags.size(); ++k)
+      hydro.atom_force[l.atom_tags[k]] = l.atom_force[k];
+    add_dem_groups(state, hydro, s);
+    writer->write(s);
+  };
+  const double start = omp_get_wtime();
+  ProgressLine progress(settings.t_end, talk);
+  snapshot();
+  long ppe_total = 0;
+  auto after_step = [&](const isph::StepStats& st) {
+    ppe_total += st.ppe_iterations;
+    const long step = solver.steps();
+    if (step % settings.diagnostics_every == 0) {
+      const DemState& state = backend.state();  // collective
+      if (rank == 0) {
+        double vmax = 0.0, emin = 1.0;
+        for (const auto& a : state.atoms)
+          if (a.body == -1)
+            vmax = std::max(vmax, std::sqrt(a.v[0] * a.v[0] + a.v[1] * a.v[1] + a.v[2] * a.v[2]));
+        for (std::size_t i = 0; i < P.size(); ++i)
+          if (P.kind[i] != isph::kWall) emin = std::min(emin, P.porosity[i]);
+        const auto& b = unresolved->balance();
+        double drag_up = 0.0, res_up = 0.0;
+        for (int a = 0; a < Dim; ++a) {
+          drag_up += (b.grain_drag[a] + b.grain_pressure[a]) * up[a];
+          res_up += b.fluid_resistance[a] * up[a];
+        }
+        const auto& t = run.timings();
+        diagnostics->row({solver.time(), double(step), omp_get_wtime() - start,
+                          double(st.ppe_iterations), st.max_speed, st.dt,
+                          double(state.atoms.size()), bed_height(state, up), vmax, emin,
+                          double(b.floored), drag_up, res_up, t.dem, t.coupling, t.fluid});
+      }
+    }
+    if (rank == 0) progress.update(solver.time(), step);
+  };
+  try {
+    for (long k = 1; solver.time() < settings.t_end * (1.0 - 1e-9); ++k) {
+      run.run_until(std::min(k * settings.output_interval, settings.t_end), after_step);
+      snapshot();
+    }
+  } catch (const isph::SimulationError& e) {
+    progress.finish();
+    if (rank == 0)
+      std::fprintf(stderr,
+                   "isphdem run: stopped at t = %g s, step %ld: %s\n"
+                   "  output written so far in %s is complete and valid.\n",
+                   solver.time(), solver.steps(), e.what(), args.out.string().c_str());
+    backend.finalize();
+    return 1;
+  }
+  progress.finish();
+  backend.finalize();
+  if (talk) {
+    const double wall = omp_get_wtime() - start;
+    const auto& t = run.timings();
+    std::printf(
+        "done: t = %g s in %ld fluid steps, %s wall, %.1f PPE iterations/step\n"
+        "  time per part: DEM substeps %.0f%%, coupling (mapping, drag) %.0f%%, ISPH %.0f%%\n",
+        solver.time(), solver.steps(), format_duration(wall).c_str(),
+        solver.steps() ? double(ppe_total) / solver.steps() : 0.0, 100 * t.dem / t.total(),
+        100 * t.coupling / t.total(), 100 * t.fluid / t.total());
+  }
+  return 0;
+}
+
 }  // namespace
 
 int run_main(int argc, char** argv) {
@@ -249,16 +407,21 @@ int run_main(int argc, char** argv) {
     args = parse_arguments(argc, argv);
     const CaseFile c = CaseFile::load(args.case_file, args.overrides, known_keys());
     const bool has_dem = c.has("dem"), has_fluid = c.has("fluid");
-    if (has_dem && has_fluid)
+    if (c.has("unresolved") && !(has_dem && has_fluid))
       throw CaseError(
-          "this version runs fluid-only or DEM-only cases; coupling a fluid with [dem] "
-          "grains comes with the unresolved-coupling work: remove [dem] or [fluid]");
+          "[unresolved] couples a fluid with [dem] grains: the case needs both a "
+          "[fluid] and a [dem] table, or drop [unresolved]");
+    if (has_dem && has_fluid)
+      return case_dimension(c) == 2 ? run_coupled<2>(c, args) : run_coupled<3>(c, args);
     if (has_dem) return run_dem_only(c, args);
     return case_dimension(c) == 2 ? run_case<2>(c, args) : run_case<3>(c, args);
   } catch (const CaseError& e) {
     std::fprintf(stderr, "isphdem run: %s\n", e.what());
     return 2;
   } catch (const isph::SimulationError& e) {
+    std::fprintf(stderr, "isphdem run: %s\n", e.what());
+    return 2;
+  } catch (const std::runtime_error& e) {  // DEM backend: missing script, refused loads
     std::fprintf(stderr, "isphdem run: %s\n", e.what());
     return 2;
   }

@@ -143,7 +143,7 @@ StepStats IsphSolver<Dim>::step(double dt) {
   {
     Stopwatch w(timings_.assembly);
     assemble_pressure(particles_, nb_, op_, rhs_, config_.gravity, config_.density, kernel_.h(),
-                      system_);
+                      system_, porous_.active() ? &porous_.pressure_coefficient() : nullptr);
   }
   {
     Stopwatch w(timings_.solve);
@@ -239,6 +239,11 @@ void IsphSolver<Dim>::predict(double dt) {
   const int n = static_cast<int>(particles_.size());
   auto& P = particles_;
   const double nu = config_.viscosity;
+  try {
+    porous_.prepare(P, nb_, dt);
+  } catch (const std::invalid_argument& e) {
+    throw SimulationError(std::string("porous terms at t = ") + fmt(time_) + " s: " + e.what());
+  }
   u_star_.resize(n);
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < n; ++i) {
@@ -250,7 +255,12 @@ void IsphSolver<Dim>::predict(double dt) {
     // so after the corrector the normal velocity at the wall is v_w.n again. Leaving u*_w = v_w
     // would count gravity twice in div u* next to the wall.
     if (P.kind[i] == kWall) {
-      u_star_[i] = P.v[i] + dt * config_.gravity;
+      u_star_[i] = P.v[i] + dt * porous_.pressure_coefficient(i) * config_.gravity;
+      continue;
+    }
+    if (porous_.active()) {
+      u_star_[i] = porous_.predict(P, i, dt, nu, eddy_viscosity_[i],
+                                   laplacian(nb_, op_, wall_ghost_, i), config_.gravity);
       continue;
     }
     // (Wall tangential velocities are replaced below, once the fluid u* is known.)
@@ -283,7 +293,7 @@ void IsphSolver<Dim>::set_wall_u_star(double dt) {
     if (ws <= 0.0) continue;
     us /= ws;
     const Vec<Dim>& nrm = P.normal[i];
-    const Vec<Dim> own = P.v[i] + dt * config_.gravity;
+    const Vec<Dim> own = P.v[i] + dt * porous_.pressure_coefficient(i) * config_.gravity;
     u_star_[i] = us - us.dot(nrm) * nrm + own.dot(nrm) * nrm;
   }
 }
@@ -319,6 +329,7 @@ void IsphSolver<Dim>::compute_pressure_rhs(double dt) {
     rhs_[i] = rho0 / dt * divergence(nb_, op_, u_star_, i) +
               config_.alpha_s * rho0 * density_error / (dt * dt);
   }
+  if (porous_.active()) PorousMedium<Dim>::remove_net_source(P, rhs_);
 }
 
 template <int Dim>
@@ -355,7 +366,7 @@ void IsphSolver<Dim>::correct(double dt) {
       P.v[i] = u_star_[i];
       continue;
     }
-    P.v[i] = u_star_[i] - dt / rho0 * gradient(nb_, op_, P.p, i);
+    P.v[i] = u_star_[i] - dt * porous_.pressure_coefficient(i) / rho0 * gradient(nb_, op_, P.p, i);
   }
 }
 

@@ -6,6 +6,8 @@
 //   pressure   lap p = rho0/dt div u* + alpha_s (rho0 - rho_i)/dt^2
 //   corrector  u = u* - dt/rho0 grad p
 //   advection  x += dt u, plus particle shifting
+// In porous regions (eps < 1 or K > 0 on some particle) the predictor, the PPE coefficient and
+// the corrector take the Darcy-Brinkman form of porous_medium.hpp.
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -18,6 +20,7 @@
 #include "neighbors.hpp"
 #include "operators.hpp"
 #include "particles.hpp"
+#include "porous_medium.hpp"
 #include "pressure_equation.hpp"
 #include "shifting.hpp"
 #include "time_step.hpp"
@@ -108,6 +111,9 @@ class IsphSolver {
   long steps() const { return steps_; }
   double max_speed() const;
   const StepTimings& timings() const { return timings_; }
+  const PorousMedium<Dim>& porous() const { return porous_; }
+  // Body acceleration for the coming steps (a flow-rate drive adjusts it between steps).
+  void set_gravity(const Vec<Dim>& g) { config_.gravity = g; }
 
  private:
   // The phases of step(), in order.
@@ -142,6 +148,7 @@ class IsphSolver {
   Neighbors<Dim> nb_;
   Operators<Dim> op_;
   PressureSystem<Dim> system_;
+  PorousMedium<Dim> porous_;
   std::vector<double> number_density_, divergence_r_, rhs_, eddy_viscosity_;
   double max_eddy_viscosity_ = 0.0;
   std::vector<Vec<Dim>> u_star_, wall_ghost_, shift_;

@@ -10,6 +10,8 @@ void Particles<Dim>::add(const Vec<Dim>& pos, const Vec<Dim>& vel, int32_t k) {
   v.push_back(vel);
   p.push_back(0.0);
   porosity.push_back(1.0);
+  solid_velocity.push_back(Vec<Dim>::Zero());
+  resistance.push_back(0.0);
   kind.push_back(k);
   id.push_back(next_id++);
   surface.push_back(0);

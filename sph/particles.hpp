@@ -17,6 +17,10 @@ struct Particles {
   std::vector<Vec<Dim>> v;       // (Darcy) velocity [m/s]; prescribed velocity for walls/solids
   std::vector<double> p;         // pressure [Pa]
   std::vector<double> porosity;  // fluid volume fraction, 1 in clear fluid
+  // Porous terms (seed Eq. (2)), set by the coupling before each step (sph/porous_medium.hpp):
+  // velocity of the solid phase and resistance coefficient K [1/s] of F_r* = -K (v_D/eps - v_s).
+  std::vector<Vec<Dim>> solid_velocity;
+  std::vector<double> resistance;
   std::vector<int32_t> kind;     // Kind
   std::vector<int64_t> id;       // stable identity across re-sorting
   std::vector<uint8_t> surface;  // 1 where the free-surface condition p = 0 applies
@@ -45,6 +49,8 @@ struct Particles {
     f(v);
     f(p);
     f(porosity);
+    f(solid_velocity);
+    f(resistance);
     f(kind);
     f(id);
     f(surface);

@@ -8,7 +8,8 @@ namespace isph {
 template <int Dim>
 void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
                        const Operators<Dim>& op, const std::vector<double>& rhs,
-                       const Vec<Dim>& gravity, double rho0, double h, PressureSystem<Dim>& out) {
+                       const Vec<Dim>& gravity, double rho0, double h, PressureSystem<Dim>& out,
+                       const std::vector<double>* coefficient) {
   const int n = static_cast<int>(particles.size());
   // Interior rows are scaled by h^2 so that all rows have O(1) coefficients.
   const double scale = h * h;
@@ -90,6 +91,18 @@ void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb
       out.b[i] = rho0 * bi / wsum;
       continue;
     }
+    if (coefficient) {
+      const auto& c = *coefficient;
+      const int d = put_neighbors([&](int k) {
+        const double cj = c[nb.index[k]];
+        const double lap = op.lap[k] * 2.0 * c[i] * cj / (c[i] + cj);
+        diag -= lap;
+        return lap * scale;
+      });
+      val[d] = diag * scale;
+      out.b[i] = rhs[i] * scale;
+      continue;
+    }
     const int d = put_neighbors([&](int k) {
       diag -= op.lap[k];
       return op.lap[k] * scale;
@@ -101,9 +114,9 @@ void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb
 
 template void assemble_pressure<2>(const Particles<2>&, const Neighbors<2>&, const Operators<2>&,
                                    const std::vector<double>&, const Vec<2>&, double, double,
-                                   PressureSystem<2>&);
+                                   PressureSystem<2>&, const std::vector<double>*);
 template void assemble_pressure<3>(const Particles<3>&, const Neighbors<3>&, const Operators<3>&,
                                    const std::vector<double>&, const Vec<3>&, double, double,
-                                   PressureSystem<3>&);
+                                   PressureSystem<3>&, const std::vector<double>*);
 
 }  // namespace isph

@@ -7,6 +7,8 @@
 //    fluid neighbours f (Adami et al. 2012 extrapolation, solved implicitly with the fluid so
 //    the wall condition and the interior equation are consistent in one system);
 //  - wall particles without fluid neighbours: p_w = 0 (decoupled);
+//  - with a per-particle coefficient c (porous media, sph/porous_medium.hpp) interior rows are
+//    div(c grad p) = rhs, each Laplacian pair weight scaled by the harmonic mean of c_i and c_j;
 //  - with no Dirichlet row at all (closed or periodic box), one fluid row is pinned to p = 0 to
 //    remove the constant null space.
 #include <vector>
@@ -27,6 +29,7 @@ struct PressureSystem {
 template <int Dim>
 void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
                        const Operators<Dim>& op, const std::vector<double>& rhs,
-                       const Vec<Dim>& gravity, double rho0, double h, PressureSystem<Dim>& out);
+                       const Vec<Dim>& gravity, double rho0, double h, PressureSystem<Dim>& out,
+                       const std::vector<double>* coefficient = nullptr);
 
 }  // namespace isph

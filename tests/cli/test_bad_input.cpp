@@ -125,5 +125,25 @@ TEST(BadInput, ParticleOutsideTheDomain) {
   EXPECT_NE(r.output.find("enlarge domain"), std::string::npos);
 }
 
+// Coupled cases (fluid + [dem] + [unresolved]): the fluid step must be fixed, and
+// [unresolved] needs both sides.
+TEST(BadInput, CoupledCaseNeedsAFixedTimeStep) {
+  const std::string script =
+      std::string(ISPHDEM_SOURCE_DIR) + "/examples/settling_grain/in.liggghts";
+  const Result r = run_bad_case(
+      "coupled_auto_dt",
+      with(kGoodCase, "[time]",
+           "[unresolved]\ngrain_diameter = 1e-3\nslab_thickness = 1e-3\n[dem]\nscript = \"" +
+               script + "\"\nsubsteps = 100\n[time]"));
+  EXPECT_NE(r.output.find("a coupled case needs a fixed fluid step: set time.dt"),
+            std::string::npos);
+}
+
+TEST(BadInput, UnresolvedWithoutDemNamesBothTables) {
+  const Result r = run_bad_case(
+      "unresolved_alone", with(kGoodCase, "[time]", "[unresolved]\ngrain_diameter = 1e-3\n[time]"));
+  EXPECT_NE(r.output.find("[unresolved] couples a fluid with [dem] grains"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace isphdem::cli

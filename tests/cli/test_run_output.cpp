@@ -1,6 +1,7 @@
 // `isphdem run` end to end: the output contract on disk, read back as ParaView reads it.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
 
 #include "cli_support.hpp"
@@ -41,6 +42,35 @@ TEST(RunOutput, ProgressLineIsQuietWhenNotATerminal) {
                        " --set particles.spacing=0.05 --set time.end=0.02");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find('\r'), std::string::npos) << "progress redraws leaked into a pipe";
+}
+
+// A coupled case (fluid + [dem] + [unresolved]) through `isphdem run`: /dem with force_hydro,
+// dem.xdmf, the coupled diagnostics columns and the cost split.
+TEST(RunOutput, CoupledCaseWritesDemLoadsAndBedHeight) {
+  const auto dir = scratch("coupled");
+  const Result r = run(example("settling_grain") + " --out " + (dir / "out").string() +
+                       " --set time.end=0.02 --set output.interval=0.01");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("DEM substeps"), std::string::npos) << r.output;
+  EXPECT_EQ(count_snapshots(dir / "out"), 3);
+  EXPECT_TRUE(std::filesystem::exists(dir / "out" / "dem.xdmf"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "out" / "fluid.xdmf"));
+  std::ifstream csv(dir / "out" / "diagnostics.csv");
+  std::string header;
+  std::getline(csv, header);
+  for (const char* col : {"bed_height", "max_grain_speed", "min_porosity", "drag_total_up",
+                          "dem_seconds", "coupling_seconds", "fluid_seconds"})
+    EXPECT_NE(header.find(col), std::string::npos) << col;
+  // The grain's hydrodynamic load after 0.02 s: buoyancy plus drag, upward, below its weight.
+  if (!std::filesystem::exists("/usr/bin/python3")) GTEST_SKIP() << "no /usr/bin/python3";
+  const std::string script =
+      "import h5py,sys; f=h5py.File(sys.argv[1]); fy=f['dem/force_hydro'][0][1]; "
+      "w=2600*9.81*3.14159265/6*1e-9; print('force_hydro_y/weight', fy/w); "
+      "sys.exit(0 if 0.3 < fy/w < 1.0 else 1)";
+  const int rc = std::system(
+      ("/usr/bin/python3 -c \"" + script + "\" " + (dir / "out" / "snap_00000200.h5").string())
+          .c_str());
+  EXPECT_EQ(rc, 0);
 }
 
 }  // namespace

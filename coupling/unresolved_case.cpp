@@ -1,0 +1,88 @@
+#include "unresolved_case.hpp"
+
+#include "mean_flow_drive.hpp"
+
+namespace isphdem {
+
+std::vector<std::string> unresolved_keys() {
+  return {"unresolved.grain_diameter",
+          "unresolved.slab_thickness",
+          "unresolved.porosity_smoothing_length",
+          "unresolved.min_porosity",
+          "unresolved.drag",
+          "unresolved.alpha",
+          "unresolved.beta",
+          "unresolved.blend",
+          "unresolved.blend_half_width"};
+}
+
+template <int Dim>
+std::unique_ptr<UnresolvedCoupling<Dim>> make_unresolved_coupling(const CaseFile& c, double fluid_h,
+                                                                  double viscosity) {
+  UnresolvedSettings s;
+  s.map.smoothing_length = c.positive("unresolved.porosity_smoothing_length", fluid_h);
+  s.map.min_porosity = c.positive("unresolved.min_porosity", s.map.min_porosity);
+  if (s.map.min_porosity >= 1.0)
+    throw CaseError("'unresolved.min_porosity' must lie in (0, 1); 0.25 suits equal spheres");
+  if (Dim == 2) {
+    if (!c.has("unresolved.slab_thickness"))
+      throw CaseError(
+          "a 2D coupled case needs 'unresolved.slab_thickness': the thickness T [m] of the DEM "
+          "slab (usually one grain diameter) over which grain volume is spread");
+    s.map.slab_thickness = c.positive("unresolved.slab_thickness");
+  }
+  const std::string drag = c.string("unresolved.drag", "seed");
+  if (drag != "seed")
+    throw CaseError("'unresolved.drag' must be \"seed\" (Ergun / Wen-Yu; got \"" + drag + "\")");
+  SeedResistanceParameters p;
+  if (!c.has("unresolved.grain_diameter"))
+    throw CaseError(
+        "'unresolved.grain_diameter' is required: the fine grains' diameter d_s [m] "
+        "used by the drag law");
+  p.grain_diameter = c.positive("unresolved.grain_diameter");
+  p.kinematic_viscosity = viscosity;
+  p.alpha = c.positive("unresolved.alpha", p.alpha);
+  p.beta = c.positive("unresolved.beta", p.beta);
+  p.blend = c.boolean("unresolved.blend", p.blend);
+  p.blend_half_width = c.positive("unresolved.blend_half_width", p.blend_half_width);
+  try {
+    auto law = std::make_shared<SeedResistance>(p);
+    return std::make_unique<UnresolvedCoupling<Dim>>(s, law);
+  } catch (const std::invalid_argument& e) {
+    throw CaseError(std::string("[unresolved]: ") + e.what());
+  }
+}
+
+template <int Dim>
+std::vector<std::unique_ptr<CouplingStage<Dim>>> make_coupling_stages(const CaseFile& c,
+                                                                      const FluidScene<Dim>& scene,
+                                                                      double dt) {
+  std::vector<std::unique_ptr<CouplingStage<Dim>>> stages;
+  const double h = scene.config.smoothing_ratio * scene.particles.spacing;
+  stages.push_back(make_unresolved_coupling<Dim>(c, h, scene.config.viscosity));
+  if (c.string("inflow.mode", "zone") == "mean_flow") {
+    isph::Vec<Dim> dir = -scene.config.gravity;
+    if (c.has("inflow.direction")) {
+      const auto d = c.numbers("inflow.direction", Dim);
+      for (int a = 0; a < Dim; ++a) dir[a] = d[a];
+    }
+    if (!(dir.norm() > 0))
+      throw CaseError(
+          "'inflow.direction' must be a non-zero vector (or set gravity for \"upward\")");
+    stages.push_back(std::make_unique<MeanFlowDrive<Dim>>(
+        c.number("inflow.velocity") * dir.normalized(), scene.config.gravity, dt));
+  }
+  return stages;
+}
+
+template std::vector<std::unique_ptr<CouplingStage<2>>> make_coupling_stages<2>(
+    const CaseFile&, const FluidScene<2>&, double);
+template std::vector<std::unique_ptr<CouplingStage<3>>> make_coupling_stages<3>(
+    const CaseFile&, const FluidScene<3>&, double);
+
+template std::unique_ptr<UnresolvedCoupling<2>> make_unresolved_coupling<2>(const CaseFile&, double,
+                                                                            double);
+template std::unique_ptr<UnresolvedCoupling<3>> make_unresolved_coupling<3>(const CaseFile&, double,
+                                                                            double);
+
+}  // namespace isphdem

@@ -1,0 +1,79 @@
+#include "porous_medium.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace isph {
+
+template <int Dim>
+void PorousMedium<Dim>::prepare(const Particles<Dim>& P, const Neighbors<Dim>& nb, double dt) {
+  const int n = static_cast<int>(P.size());
+  active_ = false;
+  for (int i = 0; i < n; ++i) {
+    if (P.kind[i] == kWall) continue;
+    const double eps = P.porosity[i], K = P.resistance[i];
+    if (!(eps > 0.0 && eps <= 1.0) || !(K >= 0.0) || !std::isfinite(K) ||
+        !P.solid_velocity[i].allFinite())
+      throw std::invalid_argument(
+          "particle " + std::to_string(P.id[i]) + ": porosity " + std::to_string(eps) +
+          ", resistance " + std::to_string(K) +
+          " 1/s; porosity must lie in (0, 1] and resistance be finite and >= 0 (check "
+          "unresolved.min_porosity and the drag law)");
+    if (eps != 1.0 || K != 0.0) active_ = true;
+  }
+  coefficient_.assign(n, 1.0);
+  if (!active_) return;
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    if (P.kind[i] == kWall) continue;
+    const double cr = virtual_mass_coefficient(P.porosity[i]);
+    coefficient_[i] = P.porosity[i] / (cr * (1.0 + dt * P.resistance[i] / cr));
+  }
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    if (P.kind[i] != kWall) continue;
+    double ws = 0.0, cs = 0.0;
+    for (int k = nb.begin(i); k < nb.end(i); ++k) {
+      const int j = nb.index[k];
+      if (P.kind[j] == kWall) continue;
+      ws += nb.w[k];
+      cs += nb.w[k] * coefficient_[j];
+    }
+    if (ws > 0.0) coefficient_[i] = cs / ws;
+  }
+}
+
+template <int Dim>
+Vec<Dim> PorousMedium<Dim>::predict(const Particles<Dim>& P, int i, double dt, double nu,
+                                    double nu_t, const Vec<Dim>& laplacian_v,
+                                    const Vec<Dim>& g) const {
+  const double eps = P.porosity[i];
+  const double cr = virtual_mass_coefficient(eps);
+  const double k = P.resistance[i] / cr;
+  // (eps/C_r) nu_E = (nu + nu_T)/C_r with nu_E = (nu + nu_T)/eps.
+  const Vec<Dim> explicit_part = P.v[i] + dt * ((nu + nu_t) / cr * laplacian_v + eps / cr * g) +
+                                 dt * k * eps * P.solid_velocity[i];
+  return explicit_part / (1.0 + dt * k);
+}
+
+template <int Dim>
+void PorousMedium<Dim>::remove_net_source(const Particles<Dim>& P, std::vector<double>& rhs) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] == kWall) continue;
+    if (P.surface[i]) return;  // a Dirichlet row sets the level: nothing to remove
+    sum += rhs[i];
+    ++n;
+  }
+  if (n == 0) return;
+  const double mean = sum / static_cast<double>(n);
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.kind[i] != kWall) rhs[i] -= mean;
+}
+
+template class PorousMedium<2>;
+template class PorousMedium<3>;
+
+}  // namespace isph

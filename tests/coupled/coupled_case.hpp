@@ -1,0 +1,57 @@
+#pragma once
+// Coupled example cases (fluid + [dem] + [unresolved]) built the way `isphdem run` builds them,
+// so that tests and examples cannot drift apart.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "case_file.hpp"
+#include "coupled_run.hpp"
+#include "dem_case_config.hpp"
+#include "dem_liggghts_backend.hpp"
+#include "fluid_scene.hpp"
+#include "run_settings.hpp"
+#include "unresolved_case.hpp"
+
+namespace isphdem::coupled_test {
+
+inline std::vector<std::string> coupled_keys() {
+  auto k = fluid_scene_keys();
+  for (const auto& v : run_settings_keys()) k.push_back(v);
+  for (const auto& d : dem_table_keys()) k.push_back("dem." + d + (d == "variables" ? ".*" : ""));
+  for (const auto& u : unresolved_keys()) k.push_back(u);
+  return k;
+}
+
+inline CaseFile load_coupled_example(const std::string& name,
+                                     const std::vector<std::string>& overrides) {
+  return CaseFile::load(std::string(ISPHDEM_SOURCE_DIR) + "/examples/" + name + "/case.toml",
+                        overrides, coupled_keys());
+}
+
+template <int Dim>
+struct CoupledCase {
+  std::unique_ptr<LiggghtsBackend> backend;
+  std::unique_ptr<CoupledRun<Dim>> run;
+  const UnresolvedCoupling<Dim>* unresolved = nullptr;
+};
+
+// LIGGGHTS output goes to out_dir.
+template <int Dim>
+CoupledCase<Dim> make_coupled_case(const CaseFile& c, const std::filesystem::path& out_dir) {
+  std::filesystem::create_directories(out_dir);
+  const RunSettings settings = parse_run_settings(c);
+  const DemCaseConfig dem = parse_dem_table(*c.table()["dem"].as_table(), c.directory());
+  FluidScene<Dim> scene = build_fluid_scene<Dim>(c);
+  auto stages = make_coupling_stages<Dim>(c, scene, settings.fixed_dt.value_or(0.0));
+  CoupledCase<Dim> out;
+  out.unresolved = dynamic_cast<const UnresolvedCoupling<Dim>*>(stages.front().get());
+  out.backend = std::make_unique<LiggghtsBackend>(dem.liggghts_args(out_dir));
+  out.backend->initialize({dem.script, {}});
+  out.run = std::make_unique<CoupledRun<Dim>>(std::move(scene), settings, *out.backend,
+                                              dem.substeps, std::move(stages));
+  return out;
+}
+
+}  // namespace isphdem::coupled_test

@@ -1,0 +1,89 @@
+// One 1 mm grain (2600 kg/m3) settling in water through the coupled driver (LIGGGHTS + ISPH +
+// UnresolvedCoupling): terminal velocity within 5% of 0.152 m/s (Schiller-Naumann) at a fluid
+// spacing dx = 2 d (examples/settling_grain). The error at dx = d is printed, not asserted: there
+// the grain is as wide as a fluid particle, outside the unresolved model's range (dx >= 3 d in
+// the seed's references [1, 2]), and the porosity near it drops to about 0.87, where the seed's
+// Wen-Yu branch (eps^-2.7, Re with eps^2) no longer reduces to Schiller-Naumann.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "coupled_case.hpp"
+#include "drag_law.hpp"
+
+namespace isphdem::coupled_test {
+namespace {
+
+constexpr double kD = 1e-3, kRhoS = 2600, kRho = 1000, kNu = 1e-6, kG = 9.81;
+
+// Schiller-Naumann terminal velocity: (rho_s - rho) g V = C_d(Re) (pi d^2 / 8) rho v^2.
+double schiller_naumann_terminal_velocity() {
+  double lo = 1e-4, hi = 1.0;
+  for (int k = 0; k < 200; ++k) {
+    const double v = 0.5 * (lo + hi);
+    const double drag = wen_yu_drag_coefficient(kD * v / kNu) * M_PI * kD * kD / 8 * kRho * v * v;
+    (drag > (kRhoS - kRho) * kG * M_PI / 6 * kD * kD * kD ? hi : lo) = v;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// What the seed's law itself gives for a grain falling at v through still water of porosity
+// eps: its share of the reaction is eps rho K v V_k / (1 - eps) (the grain's volume spread over
+// the fluid as 1 - eps), balanced against the buoyant weight.
+double law_terminal_velocity(double eps) {
+  SeedResistanceParameters p;
+  p.blend = true;
+  const SeedResistance law(p);
+  double lo = 1e-4, hi = 1.0;
+  for (int k = 0; k < 200; ++k) {
+    const double v = 0.5 * (lo + hi);
+    const double force = eps * kRho * law.coefficients(eps, v).total(v) * v / (1 - eps);
+    (force > (kRhoS - kRho) * kG ? hi : lo) = v;
+  }
+  return 0.5 * (lo + hi);
+}
+
+double terminal_velocity(double dx, const std::string& tag, double t_end) {
+  const CaseFile c = load_coupled_example(
+      "settling_grain",
+      {"particles.spacing=" + std::to_string(dx), "time.end=" + std::to_string(t_end)});
+  auto cc = make_coupled_case<2>(c, std::string(ISPHDEM_BINARY_DIR) + "/tests/settling_" + tag);
+  auto& run = *cc.run;
+  // Average over the last third of the run, where the grain has long reached steady fall.
+  double sum = 0, n = 0, y = 0;
+  run.run_until(t_end, [&](const isph::StepStats&) {
+    const auto& a = cc.backend->state().atoms.at(0);
+    y = a.x[1];
+    if (run.solver().time() > 2.0 / 3.0 * t_end) sum += -a.v[1], n += 1;
+  });
+  const double v = sum / n;
+  std::printf("dx = %.1f d: terminal velocity %.4f m/s (grain at y = %.1f mm at t = %.2f s)\n",
+              dx / kD, v, 1e3 * y, run.solver().time());
+  EXPECT_GT(y, 0.01) << "the grain reached the floor: the measured velocity is not terminal";
+  return v;
+}
+
+TEST(SettlingGrain, TerminalVelocityWithinFivePercentAtTwoDiameters) {
+  const double v_sn = schiller_naumann_terminal_velocity();
+  std::printf("Schiller-Naumann terminal velocity (Re = d v / nu): %.4f m/s (table 0.152)\n", v_sn);
+  EXPECT_NEAR(v_sn, 0.152, 0.002);
+  // The law tends to Schiller-Naumann as eps -> 1; at the porosities the grain makes around
+  // itself (about 0.975 at dx = 2d, 0.87 at dx = d) it is slower.
+  for (double eps : {1 - 1e-9, 0.975, 0.87})
+    std::printf("seed law (blend) terminal velocity at eps = %.3f: %.4f m/s\n", eps,
+                law_terminal_velocity(eps));
+  EXPECT_NEAR(law_terminal_velocity(1 - 1e-9), v_sn, 1e-3 * v_sn);
+  const double v = terminal_velocity(2 * kD, "dx2d", 0.3);
+  const double err = std::abs(v / 0.152 - 1);
+  std::printf("dx = 2 d: error against 0.152 m/s: %.1f%%\n", 100 * err);
+  EXPECT_LT(err, 0.05);
+  // At dx = d the fluid near the grain went unstable after about 0.15-0.2 s (open issue,
+  // docs/unresolved.md); the grain's velocity has levelled off by 0.08 s, so 0.12 s suffice.
+  const double v1 = terminal_velocity(1 * kD, "dx1d", 0.12);
+  std::printf("dx = d (not asserted): error against 0.152 m/s: %.1f%%\n",
+              100 * std::abs(v1 / 0.152 - 1));
+}
+
+}  // namespace
+}  // namespace isphdem::coupled_test
