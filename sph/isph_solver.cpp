@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "free_surface.hpp"
+#include "rigid_solids.hpp"
 
 namespace isph {
 
@@ -355,6 +356,11 @@ void IsphSolver<Dim>::correct(double dt) {
       P.v[i] = u_star_[i];
       continue;
     }
+    if (P.kind[i] == kSolid) {  // PMS: the fluid's momentum change goes to the body
+      P.solid_force[i] = pms_force<Dim>(rho0, P.volume, dt, P.v[i], u_star_[i], config_.gravity,
+                                        gradient(nb_, op_, P.p, i));
+      continue;
+    }
     P.v[i] = u_star_[i] - dt / rho0 * gradient(nb_, op_, P.p, i);
   }
 }
@@ -411,7 +417,7 @@ void IsphSolver<Dim>::advect(double dt, StepStats& stats) {
   auto& P = particles_;
   double vmax = 0.0;
   for (int i = 0; i < n; ++i) {
-    if (P.kind[i] == kWall) continue;
+    if (P.kind[i] == kWall || P.kind[i] == kSolid) continue;  // solids: placed by their body
     P.x[i] += dt * P.v[i] + shift_[i];
     keep_off_walls(i);
     domain_.wrap(P.x[i]);
