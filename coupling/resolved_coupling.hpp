@@ -70,6 +70,9 @@ class ResolvedCoupling : public CouplingStage<Dim> {
   std::vector<BodyInfo> info_;
   std::map<int, int> index_;                       // DEM body id -> stage body index
   std::vector<Eigen::Matrix3d> initial_rotation_;  // per body, at initialize()
+  // Per body: the PMS particles' centroid relative to the centre of mass, in the frame of
+  // initialize(). Moments are taken about that centroid (see after_fluid_step).
+  std::vector<isph::Vec<Dim>> centroid_offset_;
   std::size_t removed_ = 0;
 };
 

@@ -115,6 +115,7 @@ void IsphSolver<Dim>::update_geometry() {
     mark_free_surface(particles_, number_density_, n0_, divergence_r_, config_.surface);
   else
     std::fill(particles_.surface.begin(), particles_.surface.end(), 0);
+  if (config_.free_surface) mark_dry_solids(particles_, nb_, config_.gravity);
   // Walls need no operators; free-surface particles get the robust first-order forms (a
   // one-sided quadratic fit extrapolates). Their neighbours keep the quadratic fit: the Brookshaw
   // Laplacian is not exact for a linear (hydrostatic) field on a truncated support, and still
@@ -357,8 +358,7 @@ void IsphSolver<Dim>::correct(double dt) {
       continue;
     }
     if (P.kind[i] == kSolid) {  // PMS: the fluid's momentum change goes to the body
-      P.solid_force[i] = pms_force<Dim>(rho0, P.volume, dt, P.v[i], u_star_[i], config_.gravity,
-                                        gradient(nb_, op_, P.p, i));
+      P.solid_force[i] = pms_force(P, nb_, op_, i, rho0, dt, u_star_[i], config_.gravity);
       continue;
     }
     P.v[i] = u_star_[i] - dt / rho0 * gradient(nb_, op_, P.p, i);

@@ -18,6 +18,8 @@
 #include <vector>
 
 #include "domain.hpp"
+#include "neighbors.hpp"
+#include "operators.hpp"
 #include "particles.hpp"
 
 namespace isph {
@@ -66,13 +68,29 @@ std::vector<RigidLoad<Dim>> rigid_solid_loads(const Particles<Dim>& particles,
                                               const Domain<Dim>& domain,
                                               const std::vector<Vec<Dim>>& centres);
 
-// The PMS force on one solid particle (see the top of this file), from its predicted velocity
-// u* = v + dt (nu lap u + g) and its pressure gradient.
+// The PMS force on solid particle i (see the top of this file), from its predicted velocity
+// u* = v + dt (nu lap u + g) and its pressure gradient: zero above the waterline; on the
+// waterline row (p = 0, like the fluid's top row) the gradient leaves out the dry particles above
+// it, which hold p = 0 where the hydrostatic field would continue: with them the row felt half
+// the gradient, and a held floating box lost half a row of buoyancy (10% at H = 10 dx).
 template <int Dim>
-Vec<Dim> pms_force(double rho0, double volume, double dt, const Vec<Dim>& v, const Vec<Dim>& u_star,
-                   const Vec<Dim>& gravity, const Vec<Dim>& grad_p) {
-  return rho0 * volume * ((u_star - v) / dt - gravity) - volume * grad_p;
-}
+Vec<Dim> pms_force(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
+                   const Operators<Dim>& op, int i, double rho0, double dt, const Vec<Dim>& u_star,
+                   const Vec<Dim>& gravity);
+
+// Particles::surface value of a solid particle above the waterline: p = 0 and no fluid force.
+constexpr uint8_t kDrySolid = 2;
+
+// A floating body's particles above the water must not be fluid rows: computed as fluid, the
+// emerged part is a mound of water whose weight the projection carries down to the wetted
+// surface, and a box of half the fluid's density floated 18% too high. The waterline next to each
+// body is taken from the free-surface fluid particles within two supports of it (a least-squares
+// line in 2D, its mean height in 3D); solid particles more than half a spacing above it become
+// dry (surface = kDrySolid: p = 0, no force), those within half a spacing of it get p = 0 like
+// the fluid's own top row (they still carry the pressure gradient below them, as that row does).
+// Bodies with no free surface near them are untouched.
+template <int Dim>
+void mark_dry_solids(Particles<Dim>& particles, const Neighbors<Dim>& nb, const Vec<Dim>& gravity);
 
 // Removes the particles with drop[i] != 0 (all arrays, order kept).
 template <int Dim>

@@ -66,5 +66,135 @@ TEST(ResolvedArchimedes, HeldClumpIn2DTankFeelsRhoGV) {
   EXPECT_LT(raw.force_error, 0.02);  // the lattice matches V to half a particle (N ~ 130)
 }
 
+struct Trajectory {
+  std::vector<double> t, y, vy, x, theta;
+};
+
+// Releases `dem` in the tank and integrates it as LIGGGHTS would (in-test planar rigid body);
+// gravity acts on the body's DEM mass, the fluid's loads come from the stage.
+Trajectory release(FluidScene<2> scene, DemState dem, const ResolvedSettings& set, int steps,
+                   double dt) {
+  isph::IsphSolver<2> solver(scene.config, scene.domain, scene.particles);
+  ResolvedCoupling<2> stage(set);
+  stage.initialize(dem, solver);
+  Trajectory tr;
+  double theta = 0;
+  for (int n = 0; n < steps; ++n) {
+    stage.before_fluid_step(dem, solver);
+    solver.step(dt);
+    DemLoads loads;
+    stage.after_fluid_step(dem, solver, dt, loads);
+    integrate_planar(dem, loads, scene.config.gravity[1], dt);
+    theta += dt * dem.bodies[0].omega[2];
+    tr.t.push_back(solver.time());
+    tr.x.push_back(dem.bodies[0].x[0]);
+    tr.y.push_back(dem.bodies[0].x[1]);
+    tr.vy.push_back(dem.bodies[0].v[1]);
+    tr.theta.push_back(theta);
+  }
+  return tr;
+}
+
+ResolvedSettings settings_2d(double dx, double T) {
+  ResolvedSettings set;
+  set.spacing = dx;
+  set.fluid_density = kRho;
+  set.slab_thickness = T;
+  return set;
+}
+
+const std::vector<Vec3> kL{Vec3{0.083, 0.081, 0}, Vec3{0.123, 0.081, 0}, Vec3{0.083, 0.121, 0}};
+
+TEST(ResolvedRelease, NeutralClumpStaysPut) {
+  auto scene = tank<2>({});
+  const double dx = scene.particles.spacing, r = 0.02;
+  const DemState dem = clump(kL, r, kRho);
+  const Trajectory tr = release(scene, dem, settings_2d(dx, 0.03), 1000, 5e-4);
+  double drift = 0, turn = 0;
+  for (std::size_t k = 0; k < tr.t.size(); ++k) {
+    drift = std::max(drift, std::hypot(tr.x[k] - dem.bodies[0].x[0], tr.y[k] - dem.bodies[0].x[1]));
+    turn = std::max(turn, std::abs(tr.theta[k]));
+  }
+  std::printf("neutral clump, %zu steps (%.2f s): max drift %.3e dx, max rotation %.3e rad\n",
+              tr.t.size(), tr.t.back(), drift / dx, turn);
+  EXPECT_LT(drift, 0.01 * dx);
+  EXPECT_LT(turn, 1e-3);
+}
+
+TEST(ResolvedRelease, HeavyClumpSinksToSteadyVelocity) {
+  // A viscous liquid (nu = 5e-3 m^2/s) keeps the Reynolds number low (~1), so the clump reaches
+  // its terminal velocity within a few centimetres of the 0.2 m tank.
+  auto scene = tank<2>({"fluid.viscosity=5e-3"});
+  const double dx = scene.particles.spacing, r = 0.02, rho_s = 1100.0;
+  DemState dem = clump({Vec3{0.08, 0.15, 0}, Vec3{0.12, 0.15, 0}}, r, rho_s);
+  const Trajectory tr = release(scene, dem, settings_2d(dx, 0.03), 600, 5e-4);
+  const double a0 = (rho_s - kRho) / rho_s * kG;
+  std::printf("  t [s]   y [m]    v_y [m/s]\n");
+  for (std::size_t k = 49; k < tr.t.size(); k += 50)
+    std::printf("  %.3f  %.5f  %.5f\n", tr.t[k], tr.y[k], tr.vy[k]);
+  const std::size_t n = tr.t.size();
+  const double v_end = tr.vy[n - 1],
+               a_end = (tr.vy[n - 1] - tr.vy[n - 51]) / (tr.t[n - 1] - tr.t[n - 51]);
+  std::printf(
+      "heavy clump: v_y = %.4f m/s at t = %.2f s; acceleration there %.3e of the "
+      "initial (rho_s - rho_f)/rho_s g\n",
+      v_end, tr.t[n - 1], std::abs(a_end) / a0);
+  EXPECT_LT(v_end, 0.0);
+  EXPECT_LT(std::abs(a_end), 0.05 * a0);
+}
+
+TEST(ResolvedRelease, LightBoxFloatsAtArchimedesDraft) {
+  // A box of dx-wide spheres on the fluid lattice (one PMS particle per sphere, as in the seed),
+  // W = 20 dx, H = 10 dx, rho_s / rho_f = 0.5: draft H / 2 below the water level. It starts one
+  // spacing too high; a viscous liquid (nu = 1e-3) damps the heave within the run.
+  auto scene = tank<2>({"fluid.viscosity=1e-3"});
+  const double dx = scene.particles.spacing, ratio = 0.5, H = 10 * dx, W = 20 * dx;
+  const double bottom = 0.2 - ratio * H + dx, left = 0.05;
+  std::vector<Vec3> centres;
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 10; ++j)
+      centres.push_back(Vec3{left + (i + 0.5) * dx, bottom + (j + 0.5) * dx, 0});
+  DemState dem = clump(centres, 0.5 * dx, ratio * kRho);
+  isph::IsphSolver<2> solver(scene.config, scene.domain, scene.particles);
+  ResolvedCoupling<2> stage(settings_2d(dx, dx));
+  stage.initialize(dem, solver);
+  const double dt = 5e-4;
+  const int steps = 1600;
+  double draft_sum = 0;
+  int draft_n = 0;
+  std::printf("  t [s]   water level [m]   draft/H\n");
+  for (int n = 1; n <= steps; ++n) {
+    stage.before_fluid_step(dem, solver);
+    solver.step(dt);
+    DemLoads loads;
+    stage.after_fluid_step(dem, solver, dt, loads);
+    integrate_planar(dem, loads, scene.config.gravity[1], dt);
+    if (n % 100 && n <= steps / 2) continue;
+    // Water level: the free-surface rows clear of the box (+ dx/2, the half spacing they hold).
+    const auto& P = solver.particles();
+    double level = 0;
+    int m = 0;
+    const double xb = dem.bodies[0].x[0];
+    for (std::size_t i = 0; i < P.size(); ++i)
+      if (P.kind[i] == isph::kFluid && P.surface[i] &&
+          std::abs(P.x[i][0] - xb) > 0.5 * W + 3 * dx && P.x[i][1] > 0.15) {
+        level += P.x[i][1];
+        ++m;
+      }
+    level = level / m + 0.5 * dx;
+    const double draft = (level - (dem.bodies[0].x[1] - 0.5 * H)) / H;
+    if (n > steps / 2) {
+      draft_sum += draft;
+      ++draft_n;
+    }
+    if (n % 100 == 0) std::printf("  %.3f  %.5f  %.4f\n", solver.time(), level, draft);
+  }
+  const double mean = draft_sum / draft_n;
+  std::printf(
+      "floating box: mean draft over the second half %.4f H, expected %.4f H, error %.2f%%\n", mean,
+      ratio, 100 * (mean - ratio) / ratio);
+  EXPECT_NEAR(mean, ratio, 0.05 * ratio);
+}
+
 }  // namespace
 }  // namespace isphdem::resolved_test
