@@ -163,7 +163,7 @@ std::vector<isph::Vec<Dim>> generate_pms_particles(const DemBody& body,
     }
   }
   std::vector<uint8_t> used(pool.size(), 0);
-  while (out.size() < n) {
+  for (std::size_t picked = out.size(); picked < n; ++picked) {
     std::size_t best = 0;
     double best_norm = std::numeric_limits<double>::max();
     for (std::size_t j = 0; j < pool.size(); ++j) {
@@ -175,9 +175,33 @@ std::vector<isph::Vec<Dim>> generate_pms_particles(const DemBody& body,
       }
     }
     used[best] = 1;
-    out.push_back(nodes[pool[best]].x);
     sum += nodes[pool[best]].x - cm;
   }
+  // Greedy picks can leave a residual the last few nodes could not cancel: swap a kept band node
+  // for a free one while that brings the centroid closer.
+  // Half a spacing is the lattice's resolution of the sum (centroid within dx / 2N).
+  for (int pass = 0; pass < 50 && sum.norm() > 0.5 * dx; ++pass) {
+    double best_norm = sum.norm() - 1e-6 * dx;
+    std::size_t bi = pool.size(), bj = pool.size();
+    for (std::size_t i = 0; i < pool.size(); ++i) {
+      if (!used[i]) continue;
+      for (std::size_t j = 0; j < pool.size(); ++j) {
+        if (used[j]) continue;
+        const double m = (sum - nodes[pool[i]].x + nodes[pool[j]].x).norm();
+        if (m < best_norm) {
+          best_norm = m;
+          bi = i;
+          bj = j;
+        }
+      }
+    }
+    if (bi == pool.size()) break;
+    used[bi] = 0;
+    used[bj] = 1;
+    sum += nodes[pool[bj]].x - nodes[pool[bi]].x;
+  }
+  for (std::size_t j = 0; j < pool.size(); ++j)
+    if (used[j]) out.push_back(nodes[pool[j]].x);
   return out;
 }
 

@@ -66,6 +66,44 @@ TEST(ResolvedArchimedes, HeldClumpIn2DTankFeelsRhoGV) {
   EXPECT_LT(raw.force_error, 0.02);  // the lattice matches V to half a particle (N ~ 130)
 }
 
+TEST(ResolvedArchimedes, HeldClumpIn3DTankFeelsRhoGV) {
+  auto scene =
+      tank<3>({"case.dimension=3", "domain.min=[-0.05,-0.05,-0.05]", "domain.max=[0.25,0.25,0.35]",
+               "particles.spacing=0.0125", "fluid.gravity=[0,0,-9.81]",
+               "fluid.blocks=[{min=[0,0,0],max=[0.2,0.2,0.2]}]",
+               "walls.boxes=[{min=[0,0,0],max=[0.2,0.2,0.25],open=[\"z+\"]}]"});
+  isph::IsphSolver<3> solver(scene.config, scene.domain, scene.particles);
+  const double r = 0.03;
+  DemState dem = clump({Vec3{0.071, 0.102, 0.097}, Vec3{0.131, 0.102, 0.097}}, r, 2600.0);
+  ResolvedSettings set;
+  set.spacing = solver.particles().spacing;
+  set.fluid_density = kRho;
+  ResolvedCoupling<3> stage(set);
+  stage.initialize(dem, solver);
+  const double buoyancy = kRho * kG * dem.bodies[0].volume;
+  double ferr = 0, lateral = 0, torque = 0;
+  for (int n = 0; n < 20; ++n) {
+    stage.before_fluid_step(dem, solver);
+    solver.step(5e-4);
+    DemLoads loads;
+    stage.after_fluid_step(dem, solver, 5e-4, loads);
+    if (n < 10) continue;
+    const Vec3& f = loads.body_force[0];
+    const Vec3& t = loads.body_torque[0];
+    ferr = std::max(ferr, std::abs(f[2] - buoyancy) / buoyancy);
+    lateral = std::max(lateral, std::hypot(f[0], f[1]) / buoyancy);
+    torque = std::max(torque, std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]) / (buoyancy * r));
+  }
+  std::printf(
+      "3D held clump (%zu PMS particles, PMS/DEM volume %.4f): buoyancy error %.3e, "
+      "lateral %.3e rho g V, torque %.3e rho g V r\n",
+      stage.bodies()[0].particles, stage.bodies()[0].fluid_volume / dem.bodies[0].volume, ferr,
+      lateral, torque);
+  EXPECT_LT(ferr, 0.02);
+  EXPECT_LT(lateral, 0.005);
+  EXPECT_LT(torque, 0.005);
+}
+
 struct Trajectory {
   std::vector<double> t, y, vy, x, theta;
 };
