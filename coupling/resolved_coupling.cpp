@@ -132,8 +132,18 @@ void ResolvedCoupling<Dim>::initialize(const DemState& dem, isph::IsphSolver<Dim
     // Walls closer than half a spacing would share nodes with the body.
     std::vector<uint8_t> drop(P.size(), 0);
     const double wall_gap = 0.5 * dx * (1.0 - 1e-9), overlap = settings_.overlap * dx;
+    // Only particles near the body's bounding box are compared with its particles (a scene has
+    // many clumps and many more fluid particles).
+    isph::Vec<Dim> lo = x.front(), hi = x.front();
+    for (const auto& xi : x) {
+      lo = lo.cwiseMin(xi);
+      hi = hi.cwiseMax(xi);
+    }
+    const isph::Vec<Dim> box_centre = 0.5 * (lo + hi);
+    const isph::Vec<Dim> box_half = 0.5 * (hi - lo) + isph::Vec<Dim>::Constant(dx);
     for (std::size_t i = 0; i < P.size(); ++i) {
       if (P.kind[i] == isph::kSolid) continue;
+      if ((domain.min_image(P.x[i] - box_centre).cwiseAbs() - box_half).maxCoeff() > 0.0) continue;
       const double limit = P.kind[i] == isph::kWall ? wall_gap : overlap;
       for (const auto& xi : x) {
         if (domain.min_image(P.x[i] - xi).squaredNorm() >= limit * limit) continue;
