@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "free_surface.hpp"
+#include "rigid_solids.hpp"
 
 namespace isph {
 
@@ -114,6 +115,7 @@ void IsphSolver<Dim>::update_geometry() {
     mark_free_surface(particles_, number_density_, n0_, divergence_r_, config_.surface);
   else
     std::fill(particles_.surface.begin(), particles_.surface.end(), 0);
+  if (config_.free_surface) mark_dry_solids(particles_, nb_, config_.gravity);
   // Walls need no operators; free-surface particles get the robust first-order forms (a
   // one-sided quadratic fit extrapolates). Their neighbours keep the quadratic fit: the Brookshaw
   // Laplacian is not exact for a linear (hydrostatic) field on a truncated support, and still
@@ -366,6 +368,10 @@ void IsphSolver<Dim>::correct(double dt) {
       P.v[i] = u_star_[i];
       continue;
     }
+    if (P.kind[i] == kSolid) {  // PMS: the fluid's momentum change goes to the body
+      P.solid_force[i] = pms_force(P, nb_, op_, i, rho0, dt, u_star_[i], config_.gravity);
+      continue;
+    }
     P.v[i] = u_star_[i] - dt * porous_.pressure_coefficient(i) / rho0 * gradient(nb_, op_, P.p, i);
   }
 }
@@ -422,7 +428,7 @@ void IsphSolver<Dim>::advect(double dt, StepStats& stats) {
   auto& P = particles_;
   double vmax = 0.0;
   for (int i = 0; i < n; ++i) {
-    if (P.kind[i] == kWall) continue;
+    if (P.kind[i] == kWall || P.kind[i] == kSolid) continue;  // solids: placed by their body
     P.x[i] += dt * P.v[i] + shift_[i];
     keep_off_walls(i);
     domain_.wrap(P.x[i]);

@@ -17,6 +17,9 @@ void Particles<Dim>::add(const Vec<Dim>& pos, const Vec<Dim>& vel, int32_t k) {
   surface.push_back(0);
   normal.push_back(Vec<Dim>::Zero());
   wall_distance.push_back(0.0);
+  body.push_back(-1);
+  body_offset.push_back(Vec<Dim>::Zero());
+  solid_force.push_back(Vec<Dim>::Zero());
 }
 
 template <int Dim>

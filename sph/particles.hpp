@@ -28,6 +28,11 @@ struct Particles {
   // and the distance to that surface (zero normal: unknown, the plain Adami mirror is used).
   std::vector<Vec<Dim>> normal;
   std::vector<double> wall_distance;
+  // PMS solids (kind kSolid, sph/rigid_solids.hpp): rigid body index (-1 otherwise), position in
+  // the body frame, and the fluid force on the particle in the last step (N; per unit depth in 2D).
+  std::vector<int32_t> body;
+  std::vector<Vec<Dim>> body_offset;
+  std::vector<Vec<Dim>> solid_force;
 
   double volume = 0.0;   // particle volume dx^Dim (uniform spacing)
   double spacing = 0.0;  // dx
@@ -56,6 +61,9 @@ struct Particles {
     f(surface);
     f(normal);
     f(wall_distance);
+    f(body);
+    f(body_offset);
+    f(solid_force);
   }
 };
 

@@ -1,0 +1,64 @@
+// PMS particles of one multisphere clump, generated once from its member spheres
+// (docs/resolved.md).
+//
+// Volume: the body's DEM volume V is the reference (its mass is rho_s V in LIGGGHTS). A clump gets
+// N = round(V / dx^3) particles in 3D and N = round(V / (T dx^2)) in 2D (slab thickness T), so
+// that the fluid sees the same solid volume as the DEM -- and as the porosity of the unresolved
+// coupling, which also divides solid volume by area x T. Buoyancy is then rho_f g V to half a
+// particle. In 2D that makes the section an "equivalent cylinder": a sphere of radius r in a
+// slab of thickness T is a disc of area V/T, which equals its great circle only when
+// T = 4r/3; for other T the section is the union of the members' circles, eroded (T > 4r/3) or
+// dilated (T < 4r/3) uniformly to that area.
+//
+// Lattice: the particles sit on the fluid lattice (the one through `origin`), so that replacing
+// the fluid particles inside the body by solids leaves the particle arrangement -- and the
+// number density the PPE stabilisation sees -- exactly as it was. They are the N lattice nodes
+// deepest inside the union of the member spheres, except that within +-0.35 dx of the boundary
+// the nodes are chosen to keep the particles' centroid on the DEM centre of mass: an offset
+// centroid gives buoyancy a spurious torque.
+//
+// Spheres about one spacing wide (the seed's clumps of dx-sized spheres) get one particle per
+// member at the sphere's centre instead: a lattice cannot resolve them, and one particle per
+// sphere keeps the clump's shape. Their solid volume is N dx^Dim (x T), which differs from V;
+// ResolvedCoupling reports the ratio.
+#ifndef ISPHDEM_PMS_GENERATION_HPP
+#define ISPHDEM_PMS_GENERATION_HPP
+
+#include <string>
+#include <vector>
+
+#include "dem_state.hpp"
+#include "vec.hpp"
+
+namespace isphdem {
+
+enum class PmsShape {
+  Auto,       // per_sphere when every member is at most 1.5 dx wide, else lattice
+  Lattice,    // volume-matched lattice nodes inside the members
+  PerSphere,  // one particle at each member's centre
+};
+
+PmsShape pms_shape_from_name(const std::string& name);
+
+struct PmsGenerationSettings {
+  double spacing = 0.0;         // dx [m]
+  double slab_thickness = 0.0;  // T [m], 2D only
+  PmsShape shape = PmsShape::Auto;
+};
+
+// Space positions (x-y plane in 2D) of the PMS particles of `body` at its present pose. `members`
+// are its atoms; `origin` is any node of the fluid lattice. Throws std::invalid_argument with
+// the cause and the fix for unusable input (no members, zero volume, too small for one particle).
+template <int Dim>
+std::vector<isph::Vec<Dim>> generate_pms_particles(const DemBody& body,
+                                                   const std::vector<DemAtom>& members,
+                                                   const PmsGenerationSettings& settings,
+                                                   const isph::Vec<Dim>& origin);
+
+// The solid volume the fluid sees for n PMS particles: n dx^3, or n dx^2 T in 2D.
+template <int Dim>
+double pms_volume(std::size_t n, const PmsGenerationSettings& settings);
+
+}  // namespace isphdem
+
+#endif
