@@ -83,6 +83,8 @@ std::vector<std::string> known_keys() {
   for (const auto& d : dem_table_keys()) k.push_back("dem." + d + (d == "variables" ? ".*" : ""));
   const auto u = unresolved_keys();
   k.insert(k.end(), u.begin(), u.end());
+  const auto cp = coupling_keys();
+  k.insert(k.end(), cp.begin(), cp.end());
   return k;
 }
 
@@ -335,6 +337,10 @@ int run_coupled(const CaseFile& c, const Arguments& args) {
     const DemLoads& l = run.loads();
     for (std::size_t k = 0; k < l.atom_tags.size(); ++k)
       hydro.atom_force[l.atom_tags[k]] = l.atom_force[k];
+    for (std::size_t k = 0; k < l.body_ids.size(); ++k) {
+      hydro.body_force[l.body_ids[k]] = l.body_force[k];
+      hydro.body_torque[l.body_ids[k]] = l.body_torque[k];
+    }
     add_dem_groups(state, hydro, s);
     writer->write(s);
   };
@@ -354,17 +360,21 @@ int run_coupled(const CaseFile& c, const Arguments& args) {
             vmax = std::max(vmax, std::sqrt(a.v[0] * a.v[0] + a.v[1] * a.v[1] + a.v[2] * a.v[2]));
         for (std::size_t i = 0; i < P.size(); ++i)
           if (P.kind[i] != isph::kWall) emin = std::min(emin, P.porosity[i]);
-        const auto& b = unresolved->balance();
         double drag_up = 0.0, res_up = 0.0;
-        for (int a = 0; a < Dim; ++a) {
-          drag_up += (b.grain_drag[a] + b.grain_pressure[a]) * up[a];
-          res_up += b.fluid_resistance[a] * up[a];
+        std::size_t floored = 0;
+        if (unresolved) {  // coupling.model = "resolved" has no porosity/drag stage
+          const auto& b = unresolved->balance();
+          floored = b.floored;
+          for (int a = 0; a < Dim; ++a) {
+            drag_up += (b.grain_drag[a] + b.grain_pressure[a]) * up[a];
+            res_up += b.fluid_resistance[a] * up[a];
+          }
         }
         const auto& t = run.timings();
         diagnostics->row({solver.time(), double(step), omp_get_wtime() - start,
                           double(st.ppe_iterations), st.max_speed, st.dt,
                           double(state.atoms.size()), bed_height(state, up), vmax, emin,
-                          double(b.floored), drag_up, res_up, t.dem, t.coupling, t.fluid});
+                          double(floored), drag_up, res_up, t.dem, t.coupling, t.fluid});
       }
     }
     if (rank == 0) progress.update(solver.time(), step);

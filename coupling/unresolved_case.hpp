@@ -25,14 +25,25 @@ namespace isphdem {
 
 std::vector<std::string> unresolved_keys();
 
+// The `[coupling]` table: which grains the fluid resolves.
+//   [coupling]
+//   model = "unresolved"      # every grain unresolved, clump spheres too (default)
+//         | "semi-resolved"   # clumps resolved by PMS particles, free spheres unresolved
+//         | "resolved"        # clumps resolved, no porosity/drag stage
+//   slab_thickness = 1e-3     # quasi-2D: DEM slab thickness T [m] (alias
+//   unresolved.slab_thickness) pms_shape = "auto"        # "lattice" | "per_sphere" | "auto"
+//   (docs/resolved.md) pms_volume = "dem"        # "dem" | "particles" pms_overlap = 0.5         #
+//   fluid closer than this many dx to a PMS particle is removed
+std::vector<std::string> coupling_keys();
+
 // Throws CaseError naming the key and the fix. fluid_h and viscosity come from the fluid scene.
 template <int Dim>
 std::unique_ptr<UnresolvedCoupling<Dim>> make_unresolved_coupling(const CaseFile& c, double fluid_h,
                                                                   double viscosity);
 
-// All stages of a coupled case, in the order the driver runs them: the unresolved coupling,
-// then, with [inflow] mode = "mean_flow", the MeanFlowDrive (mean_flow_drive.hpp). A resolved
-// (PMS) stage is appended here when the case has clumps.
+// All stages of a coupled case, in the order the driver runs them, by coupling.model: the
+// unresolved coupling (not for "resolved"), the resolved PMS stage ("semi-resolved",
+// "resolved"), then, with [inflow] mode = "mean_flow", the MeanFlowDrive (mean_flow_drive.hpp).
 template <int Dim>
 std::vector<std::unique_ptr<CouplingStage<Dim>>> make_coupling_stages(const CaseFile& c,
                                                                       const FluidScene<Dim>& scene,

@@ -19,6 +19,10 @@ namespace isphdem {
 
 struct UnresolvedSettings {
   PorosityMapSettings map;  // smoothing_length, kernel, min_porosity, slab_thickness
+  // coupling.model = "unresolved": the spheres of clumps are unresolved grains too (their loads
+  // go to the member atoms, which fix multisphere sums into the body). Otherwise only free
+  // spheres are, and clumps are left to the resolved (PMS) stage.
+  bool clump_spheres = false;
 };
 
 template <int Dim>
