@@ -65,12 +65,43 @@ void mark_free_surface(Particles<Dim>& particles, const std::vector<double>& n, 
         ((by_density && n[i] < c.density_ratio * n0) || (by_div && div[i] < div_min));
 }
 
+template <int Dim>
+void mark_sparse_as_surface(Particles<Dim>& particles, const Neighbors<Dim>& nb, int min_fluid,
+                            int min_all) {
+  const int np = static_cast<int>(particles.size());
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < np; ++i) {
+    if (particles.kind[i] == kWall || particles.surface[i]) continue;
+    int nf = 0;
+    for (int k = nb.begin(i); k < nb.end(i); ++k) nf += particles.kind[nb.index[k]] != kWall;
+    if (nf < min_fluid || nb.end(i) - nb.begin(i) < min_all) particles.surface[i] = 1;
+  }
+}
+
+template <int Dim>
+int reference_neighbor_count(const Kernel<Dim>& kernel, double dx) {
+  const int m = static_cast<int>(std::ceil(kernel.support() / dx)) + 1;
+  int count = -1;  // the particle itself
+  Eigen::Matrix<int, Dim, 1> c = Eigen::Matrix<int, Dim, 1>::Constant(-m);
+  while (true) {
+    count += c.template cast<double>().norm() * dx < kernel.support();
+    int a = 0;
+    while (a < Dim && ++c[a] > m) c[a++] = -m;
+    if (a == Dim) break;
+  }
+  return count;
+}
+
 template void number_density<2>(const Neighbors<2>&, std::vector<double>&);
 template void number_density<3>(const Neighbors<3>&, std::vector<double>&);
 template double reference_number_density<2>(const Kernel<2>&, double);
 template double reference_number_density<3>(const Kernel<3>&, double);
 template void position_divergence<2>(const Neighbors<2>&, double, std::vector<double>&);
 template void position_divergence<3>(const Neighbors<3>&, double, std::vector<double>&);
+template void mark_sparse_as_surface<2>(Particles<2>&, const Neighbors<2>&, int, int);
+template void mark_sparse_as_surface<3>(Particles<3>&, const Neighbors<3>&, int, int);
+template int reference_neighbor_count<2>(const Kernel<2>&, double);
+template int reference_neighbor_count<3>(const Kernel<3>&, double);
 template void mark_free_surface<2>(Particles<2>&, const std::vector<double>&, double,
                                    const std::vector<double>&, const SurfaceCriteria&);
 template void mark_free_surface<3>(Particles<3>&, const std::vector<double>&, double,

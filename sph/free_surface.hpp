@@ -37,4 +37,19 @@ template <int Dim>
 void mark_free_surface(Particles<Dim>& particles, const std::vector<double>& n, double n0,
                        const std::vector<double>& div, const SurfaceCriteria& criteria);
 
+// Walls count as support in the number density, and a close pair adds a large kernel value, so
+// a sheet one or two particles thick running along a floor (the toe of a dam-break surge), or a
+// clustered splash, reads as nearly full and was not flagged: its rows then carried pressures of
+// 1e4-1e5 Pa where the head is a few pascals. A particle is therefore marked as surface too when
+// it has fewer than `min_fluid` non-wall neighbours or fewer than `min_all` neighbours of any
+// kind. A particle in a two-wall corner of a full tank has 7 fluid neighbours in 2D and a full
+// count with its walls, so neither test touches it.
+template <int Dim>
+void mark_sparse_as_surface(Particles<Dim>& particles, const Neighbors<Dim>& nb, int min_fluid,
+                            int min_all);
+
+// Neighbours of an interior particle of a perfect lattice of spacing dx (20 in 2D at h = 1.3 dx).
+template <int Dim>
+int reference_neighbor_count(const Kernel<Dim>& kernel, double dx);
+
 }  // namespace isph

@@ -41,6 +41,9 @@ class Stopwatch {
   double t0_;
 };
 
+// Closest approach of two fluid particles, in spacings (see separate_close_pairs).
+constexpr double kMinPairDistance = 0.5;
+
 }  // namespace
 
 template <int Dim>
@@ -111,9 +114,12 @@ void IsphSolver<Dim>::update_geometry() {
   number_density(nb_, number_density_);
   if (config_.surface.method != SurfaceDetection::NumberDensity)
     position_divergence(nb_, particles_.volume, divergence_r_);
-  if (config_.free_surface)
+  if (config_.free_surface) {
     mark_free_surface(particles_, number_density_, n0_, divergence_r_, config_.surface);
-  else
+    mark_sparse_as_surface(
+        particles_, nb_, 3 * Dim,
+        static_cast<int>(0.6 * reference_neighbor_count(kernel_, particles_.spacing)));
+  } else
     std::fill(particles_.surface.begin(), particles_.surface.end(), 0);
   if (config_.free_surface) mark_dry_solids(particles_, nb_, config_.gravity);
   // Walls need no operators; free-surface particles get the robust first-order forms (a
@@ -426,6 +432,8 @@ template <int Dim>
 void IsphSolver<Dim>::advect(double dt, StepStats& stats) {
   const int n = static_cast<int>(particles_.size());
   auto& P = particles_;
+  if (config_.free_surface)
+    separate_close_pairs(P, nb_, domain_, dt, kMinPairDistance * P.spacing, shift_);
   double vmax = 0.0;
   for (int i = 0; i < n; ++i) {
     if (P.kind[i] == kWall || P.kind[i] == kSolid) continue;  // solids: placed by their body

@@ -46,6 +46,40 @@ void compute_shifts(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
   }
 }
 
+template <int Dim>
+void separate_close_pairs(Particles<Dim>& particles, const Neighbors<Dim>& nb,
+                          const Domain<Dim>& domain, double dt, double min_distance,
+                          std::vector<Vec<Dim>>& shift) {
+  auto& P = particles;
+  const int n = static_cast<int>(P.size());
+  // Serial: a particle may be in several close pairs, and each correction must see the last.
+  for (int i = 0; i < n; ++i) {
+    if (P.kind[i] != kFluid) continue;
+    for (int k = nb.begin(i); k < nb.end(i); ++k) {
+      const int j = nb.index[k];
+      if (j <= i || P.kind[j] != kFluid) continue;
+      const Vec<Dim> d =
+          domain.min_image((P.x[i] + dt * P.v[i] + shift[i]) - (P.x[j] + dt * P.v[j] + shift[j]));
+      const double r = d.norm();
+      if (r >= min_distance || !(r > 0.0)) continue;
+      const Vec<Dim> e = d / r;
+      const double gap = 0.5 * (min_distance - r);
+      shift[i] += gap * e;
+      shift[j] -= gap * e;
+      const double vn = (P.v[i] - P.v[j]).dot(e);
+      if (vn < 0.0) {
+        P.v[i] -= 0.5 * vn * e;
+        P.v[j] += 0.5 * vn * e;
+      }
+    }
+  }
+}
+
+template void separate_close_pairs<2>(Particles<2>&, const Neighbors<2>&, const Domain<2>&, double,
+                                      double, std::vector<Vec<2>>&);
+template void separate_close_pairs<3>(Particles<3>&, const Neighbors<3>&, const Domain<3>&, double,
+                                      double, std::vector<Vec<3>>&);
+
 template void compute_shifts<2>(const Particles<2>&, const Neighbors<2>&, const Kernel<2>&,
                                 const ShiftingParams&, double, const std::vector<uint8_t>&,
                                 std::vector<Vec<2>>&);

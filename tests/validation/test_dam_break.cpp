@@ -1,7 +1,9 @@
 // Dam break after Martin & Moyce (1952): a column a wide and 2a high collapses into a dry tank.
 // The surge front Z = x/a (the largest x of fluid near the floor, plus half a spacing for the
 // volume each particle carries) is compared with their measurements against T = t sqrt(2g/a).
-// The run must reach T = 3 and stay within 5% of the table for T <= 2.5.
+// The run must reach T = 3, also at a small CFL number (0.05: until the toe fixes of
+// docs/fluid.md it failed at t = 0.071 s, the quickest reproducer of the toe blow-ups), and stay
+// within 5% of the table for T <= 2.5 (not met yet: that case is labelled work_in_progress).
 //
 // DAM_BREAK_RESOLUTION (particles across a) is 40 for the default build of this test and 80 for
 // the slow variant.
@@ -57,41 +59,51 @@ struct DamBreakResult {
   std::string failure;
 };
 
-// One run shared by the tests below.
+// One run per CFL number (0: the case's own), shared by the tests below.
+DamBreakResult run_dam_break(double cfl) {
+  const double a = 0.1, g = 9.81;
+  const double dx = a / DAM_BREAK_RESOLUTION;
+  std::vector<std::string> overrides = {"particles.spacing=" + std::to_string(dx)};
+  if (cfl > 0.0) overrides.push_back("time.cfl=" + std::to_string(cfl));
+  const CaseFile c = load_example("dam_break_2d", overrides);
+  FluidRun<2> run(build_fluid_scene<2>(c), parse_run_settings(c));
+  auto& s = run.solver();
+  const double t_scale = std::sqrt(2.0 * g / a);  // T = t * t_scale
+  DamBreakResult out;
+  try {
+    for (const auto& [T, Z] : kMartinMoyce) {
+      if (T > 0.0) run.run_until(T / t_scale);
+      out.z.push_back(front(s, a, true));
+      out.z_any.push_back(front(s, a, false));
+    }
+    run.run_until(3.0 / t_scale);
+  } catch (const isph::SimulationError& e) {
+    out.failure = e.what();
+  }
+  out.t_end_scaled = s.time() * t_scale;
+  out.steps = s.steps();
+  std::printf("  a/dx = %d, CFL %s, %ld steps, reached T = %.3f\n", DAM_BREAK_RESOLUTION,
+              cfl > 0.0 ? std::to_string(cfl).c_str() : "of the case", out.steps, out.t_end_scaled);
+  std::printf("     T   Z (M&M)   Z (surge)  diff     Z (any particle)  diff\n");
+  for (std::size_t k = 0; k < out.z.size(); ++k) {
+    const double ref = kMartinMoyce[k].second;
+    std::printf("  %5.2f   %5.2f    %6.3f  %+6.1f%%    %6.3f          %+6.1f%%\n",
+                kMartinMoyce[k].first, ref, out.z[k], 100.0 * (out.z[k] - ref) / ref, out.z_any[k],
+                100.0 * (out.z_any[k] - ref) / ref);
+  }
+  if (!out.failure.empty()) std::printf("  stopped: %s\n", out.failure.c_str());
+  return out;
+}
+
 const DamBreakResult& dam_break() {
-  static const DamBreakResult r = [] {
-    const double a = 0.1, g = 9.81;
-    const double dx = a / DAM_BREAK_RESOLUTION;
-    const CaseFile c = load_example("dam_break_2d", {"particles.spacing=" + std::to_string(dx)});
-    FluidRun<2> run(build_fluid_scene<2>(c), parse_run_settings(c));
-    auto& s = run.solver();
-    const double t_scale = std::sqrt(2.0 * g / a);  // T = t * t_scale
-    DamBreakResult out;
-    try {
-      for (const auto& [T, Z] : kMartinMoyce) {
-        if (T > 0.0) run.run_until(T / t_scale);
-        out.z.push_back(front(s, a, true));
-        out.z_any.push_back(front(s, a, false));
-      }
-      run.run_until(3.0 / t_scale);
-    } catch (const isph::SimulationError& e) {
-      out.failure = e.what();
-    }
-    out.t_end_scaled = s.time() * t_scale;
-    out.steps = s.steps();
-    std::printf("  a/dx = %d, %ld steps, reached T = %.3f\n", DAM_BREAK_RESOLUTION, out.steps,
-                out.t_end_scaled);
-    std::printf("     T   Z (M&M)   Z (surge)  diff     Z (any particle)  diff\n");
-    for (std::size_t k = 0; k < out.z.size(); ++k) {
-      const double ref = kMartinMoyce[k].second;
-      std::printf("  %5.2f   %5.2f    %6.3f  %+6.1f%%    %6.3f          %+6.1f%%\n",
-                  kMartinMoyce[k].first, ref, out.z[k], 100.0 * (out.z[k] - ref) / ref,
-                  out.z_any[k], 100.0 * (out.z_any[k] - ref) / ref);
-    }
-    if (!out.failure.empty()) std::printf("  stopped: %s\n", out.failure.c_str());
-    return out;
-  }();
+  static const DamBreakResult r = run_dam_break(0.0);
   return r;
+}
+
+TEST(DamBreak, RunsStablyToT3AtSmallCfl) {
+  const DamBreakResult r = run_dam_break(0.05);
+  EXPECT_TRUE(r.failure.empty()) << r.failure;
+  EXPECT_GE(r.t_end_scaled, 3.0 - 1e-6);
 }
 
 TEST(DamBreak, RunsStablyToT3) {

@@ -1,0 +1,132 @@
+// The seed's circulation tank without soil (examples/circulation_tank_2d): water is forced upward
+// at v_in in a zone between the two inner walls and circulates back down outside them. At steady
+// state the upward flux through the window above the forcing zone (where the soil layer will sit)
+// must equal the forced flux v_in * 28 mm within 3%, no particle may leave the tank and no value
+// may become NaN (the solver throws on both, which fails the test with its message). The flux
+// comparison is not met yet (+4%: the column above the zone moves about 5% faster than the
+// zone itself; see docs/fluid.md) and is labelled work_in_progress; stability is validation.
+//
+// CIRCULATION_TANK_END is the simulated time: 0.3 s in the default suite (steady flux is reached
+// within a few hundredths of a second: the fluid is incompressible), the 10 s in the slow
+// variant. Both at the case's dx = 1 mm and dt = 1e-4 s.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "case_path.hpp"
+#include "fluid_run.hpp"
+
+#ifndef CIRCULATION_TANK_END
+#define CIRCULATION_TANK_END 0.3
+#endif
+
+namespace isphdem::validation {
+namespace {
+
+// Window between the inner walls (their inner faces at x = 16 and 44 mm), centred 25 mm above
+// the floor: above the forcing zone (12-18 mm) and below the top of the inner walls (40 mm).
+constexpr double kWindowLo = 0.016, kWindowHi = 0.044, kWindowY = 0.025;
+
+// Volume flux per unit depth through the window: the mean upward velocity of the particles in a
+// slab 2 dx thick across the window, times the window width. (Summing V_i v_y over the slab and
+// dividing by its thickness instead counts each particle as dx^2 of water; the particle count
+// in the slab fluctuates by a few percent with the disorder, and that read 4% high on average.)
+struct WindowSample {
+  double flux = 0.0;    // mean v_y times width
+  double volume = 0.0;  // sum V_i v_y / slab thickness, for comparison
+};
+
+WindowSample window_flux(const isph::IsphSolver<2>& s) {
+  const auto& P = s.particles();
+  const double slab = 2.0 * P.spacing;
+  double sum_v = 0.0;
+  int count = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] == isph::kWall) continue;
+    const auto& x = P.x[i];
+    if (x[0] > kWindowLo && x[0] < kWindowHi && std::abs(x[1] - kWindowY) < 0.5 * slab) {
+      sum_v += P.v[i][1];
+      ++count;
+    }
+  }
+  WindowSample w;
+  if (count > 0) w.flux = sum_v / count * (kWindowHi - kWindowLo);
+  w.volume = P.volume * sum_v / slab;
+  return w;
+}
+
+struct TankResult {
+  double t = 0.0, flux = 0.0, forced = 0.0, v_max = 0.0, v_in = 0.0;
+  int outside = 0;
+  std::string failure;
+};
+
+// One run shared by the tests below.
+const TankResult& tank() {
+  static const TankResult r = [] {
+    const double t_end = CIRCULATION_TANK_END;
+    const CaseFile c = load_example("circulation_tank_2d", {"time.end=" + std::to_string(t_end)});
+    TankResult out;
+    out.v_in = c.number("inflow.velocity");
+    out.forced = out.v_in * (kWindowHi - kWindowLo);
+    FluidRun<2> run(build_fluid_scene<2>(c), parse_run_settings(c));
+    auto& s = run.solver();
+    // Flux averaged over the second half of the run (sampled every step).
+    double sum = 0.0, sum_volume = 0.0, lo = 1e9, hi = -1e9;
+    long samples = 0;
+    try {
+      run.run_until(t_end, [&](const isph::StepStats& st) {
+        out.v_max = std::max(out.v_max, st.max_speed);
+        if (s.time() < 0.5 * t_end) return;
+        const WindowSample w = window_flux(s);
+        sum += w.flux;
+        sum_volume += w.volume;
+        lo = std::min(lo, w.flux);
+        hi = std::max(hi, w.flux);
+        ++samples;
+      });
+    } catch (const isph::SimulationError& e) {
+      out.failure = e.what();
+    }
+    out.t = s.time();
+    out.flux = samples > 0 ? sum / samples : 0.0;
+    // Every fluid particle still inside the tank (walls at x = 0 and 60 mm, floor at 0).
+    const auto& P = s.particles();
+    for (std::size_t i = 0; i < P.size(); ++i)
+      if (P.kind[i] != isph::kWall &&
+          (P.x[i][0] < 0.0 || P.x[i][0] > 0.06 || P.x[i][1] < 0.0 || !P.x[i].allFinite()))
+        ++out.outside;
+    std::printf(
+        "  t = %.2f s in %ld steps; window flux %.4e m^2/s (min %.4e, max %.4e over t >= %.2f "
+        "s), forced %.4e: error %+.2f%% (slab-volume estimate %+.2f%%); max speed %.4f m/s "
+        "(%.1f v_in); particles outside %d\n",
+        out.t, s.steps(), out.flux, lo, hi, 0.5 * t_end, out.forced,
+        100.0 * (out.flux - out.forced) / out.forced,
+        samples > 0 ? 100.0 * (sum_volume / samples - out.forced) / out.forced : 0.0, out.v_max,
+        out.v_max / out.v_in, out.outside);
+    if (!out.failure.empty()) std::printf("  stopped: %s\n", out.failure.c_str());
+    return out;
+  }();
+  return r;
+}
+
+TEST(CirculationTank, StaysStableAndNothingEscapes) {
+  const auto& r = tank();
+  EXPECT_TRUE(r.failure.empty()) << r.failure;
+  EXPECT_GE(r.t, CIRCULATION_TANK_END - 1e-9);
+  EXPECT_EQ(r.outside, 0);
+  // The forcing drives a slow circulation; a spurious jet would show as a speed far above v_in.
+  EXPECT_LT(r.v_max, 10.0 * r.v_in);
+}
+
+TEST(CirculationTank, WindowFluxEqualsForcedFlux) {
+  const auto& r = tank();
+  ASSERT_TRUE(r.failure.empty()) << r.failure;
+  EXPECT_LT(std::abs(r.flux - r.forced) / r.forced, 0.03);
+}
+
+}  // namespace
+}  // namespace isphdem::validation
