@@ -18,6 +18,7 @@
 #include "dem_run_case.hpp"
 #include "dem_snapshot.hpp"
 #include "diagnostics_writer.hpp"
+#include "erosion_diagnostics.hpp"
 #include "fluid_run.hpp"
 #include "fluid_scene.hpp"
 #include "fluid_snapshot.hpp"
@@ -313,18 +314,38 @@ int run_coupled(const CaseFile& c, const Arguments& args) {
         backend.timestep(), args.out.string().c_str(), settings.output_interval, settings.t_end);
     std::fflush(stdout);
   }
+  // Grain density for the mass of ejected fines: that of the clumps when there are any (the
+  // DEM state has no per-atom mass).
+  double grain_density = std::nan("");
+  for (const auto& b : backend.state().bodies)
+    if (b.volume > 0) grain_density = b.mass / b.volume;
+  const ErosionDiagnostics<Dim> erosion(
+      backend.state(), up, c.has("inflow.velocity") ? std::abs(c.number("inflow.velocity")) : 1.0,
+      grain_density);
   std::unique_ptr<SnapshotWriter> writer;
   std::unique_ptr<DiagnosticsWriter> diagnostics;
   if (rank == 0) {
     writer = std::make_unique<SnapshotWriter>(args.out);
     std::ofstream f(args.out / "case_used.toml");
     f << "# " << c.path().string() << " with the overrides of this run\n" << c.table() << "\n";
-    diagnostics = std::make_unique<DiagnosticsWriter>(
-        args.out / "diagnostics.csv",
-        std::vector<std::string>{"time", "step", "wall_seconds", "ppe_iterations", "max_speed",
-                                 "dt", "atoms", "bed_height", "max_grain_speed", "min_porosity",
-                                 "floored_porosity", "drag_total_up", "fluid_resistance_up",
-                                 "dem_seconds", "coupling_seconds", "fluid_seconds"});
+    std::vector<std::string> columns{"time",
+                                     "step",
+                                     "wall_seconds",
+                                     "ppe_iterations",
+                                     "max_speed",
+                                     "dt",
+                                     "atoms",
+                                     "bed_height",
+                                     "max_grain_speed",
+                                     "min_porosity",
+                                     "floored_porosity",
+                                     "drag_total_up",
+                                     "fluid_resistance_up",
+                                     "dem_seconds",
+                                     "coupling_seconds",
+                                     "fluid_seconds"};
+    for (const auto& e : ErosionDiagnostics<Dim>::columns()) columns.push_back(e);
+    diagnostics = std::make_unique<DiagnosticsWriter>(args.out / "diagnostics.csv", columns);
   }
   auto snapshot = [&]() {
     const DemState& state = backend.state();  // collective
@@ -371,10 +392,24 @@ int run_coupled(const CaseFile& c, const Arguments& args) {
           }
         }
         const auto& t = run.timings();
-        diagnostics->row({solver.time(), double(step), omp_get_wtime() - start,
-                          double(st.ppe_iterations), st.max_speed, st.dt,
-                          double(state.atoms.size()), bed_height(state, up), vmax, emin,
-                          double(floored), drag_up, res_up, t.dem, t.coupling, t.fluid});
+        std::vector<double> row{solver.time(),
+                                double(step),
+                                omp_get_wtime() - start,
+                                double(st.ppe_iterations),
+                                st.max_speed,
+                                st.dt,
+                                double(state.atoms.size()),
+                                bed_height(state, up),
+                                vmax,
+                                emin,
+                                double(floored),
+                                drag_up,
+                                res_up,
+                                t.dem,
+                                t.coupling,
+                                t.fluid};
+        for (double v : ErosionDiagnostics<Dim>::row(erosion.measure(state, P))) row.push_back(v);
+        diagnostics->row(row);
       }
     }
     if (rank == 0) progress.update(solver.time(), step);

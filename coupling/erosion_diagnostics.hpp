@@ -1,0 +1,54 @@
+// Measurements of the internal-erosion experiment (issue 7, seed section 4), for diagnostics.csv
+// of coupled runs. The layer is what the grains occupy at the start: its surface is the highest
+// grain top, its footprint the grains' horizontal extent. "Up" is against gravity.
+#ifndef ISPHDEM_EROSION_DIAGNOSTICS_HPP
+#define ISPHDEM_EROSION_DIAGNOSTICS_HPP
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "dem_state.hpp"
+#include "particles.hpp"
+
+namespace isphdem {
+
+struct ErosionMeasures {
+  int fines_above = 0;          // free spheres entirely above the initial layer surface
+  double fines_above_mass = 0;  // their mass [kg] (grain density x sphere volume)
+  // Largest interstitial fluid speed |v_D| / eps among fluid particles inside the initial layer,
+  // divided by the reference speed (v_in).
+  double max_pore_speed_ratio = 0;
+  double surface_height = 0;         // median over 2 mm columns of the highest grain top [m]
+  double skeleton_displacement = 0;  // mean in-plane displacement of the clumps' centres [m]
+};
+
+template <int Dim>
+class ErosionDiagnostics {
+ public:
+  // up: unit vector against gravity (3 components, the fluid's axes first); reference_speed:
+  // v_in (1 when the case has none); grain_density for the mass of ejected fines.
+  ErosionDiagnostics(const DemState& initial, const Vec3& up, double reference_speed,
+                     double grain_density);
+
+  ErosionMeasures measure(const DemState& dem, const isph::Particles<Dim>& fluid) const;
+
+  static std::vector<std::string> columns();
+  static std::vector<double> row(const ErosionMeasures& m);
+
+  double initial_surface() const { return surface0_; }
+
+ private:
+  double height(const Vec3& x) const { return x[0] * up_[0] + x[1] * up_[1] + x[2] * up_[2]; }
+  int across_axis() const;  // horizontal axis of the fluid plane
+
+  Vec3 up_;
+  double reference_speed_, grain_density_;
+  double surface0_ = 0, bottom0_ = 0;  // initial layer top and bottom (heights)
+  double lo0_ = 0, hi0_ = 0;           // initial layer's horizontal extent
+  std::map<int, Vec3> body0_;          // initial clump centres by body id
+};
+
+}  // namespace isphdem
+
+#endif

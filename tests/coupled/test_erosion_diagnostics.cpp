@@ -1,0 +1,67 @@
+// The internal-erosion measurements on hand-made states whose answers are known exactly.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "erosion_diagnostics.hpp"
+
+namespace isphdem {
+namespace {
+
+DemAtom fine(int tag, double x, double y) {
+  DemAtom a;
+  a.tag = tag;
+  a.x = {x, y, 0.0005};
+  a.radius = 0.0005;
+  return a;
+}
+
+// A layer of fines 4 mm high from x = 0 to 10 mm, one clump at (5, 2) mm.
+DemState layer() {
+  DemState s;
+  int tag = 1;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 4; ++j)
+      s.atoms.push_back(fine(tag++, 0.0005 + 1e-3 * i, 0.0005 + 1e-3 * j));
+  DemBody b;
+  b.id = 1;
+  b.x = {0.005, 0.002, 0.0005};
+  s.bodies.push_back(b);
+  return s;
+}
+
+const Vec3 kUp{0.0, 1.0, 0.0};
+
+TEST(ErosionDiagnostics, InitialLayerHasNothingAboveAndItsOwnSurface) {
+  const DemState s = layer();
+  ErosionDiagnostics<2> d(s, kUp, 0.005, 2600.0);
+  EXPECT_NEAR(d.initial_surface(), 0.004, 1e-15);
+  const auto m = d.measure(s, isph::Particles<2>{});
+  EXPECT_EQ(m.fines_above, 0);
+  EXPECT_NEAR(m.surface_height, 0.004, 1e-15);
+  EXPECT_EQ(m.skeleton_displacement, 0.0);
+}
+
+TEST(ErosionDiagnostics, EjectedFinesMovedClumpAndPoreJet) {
+  const DemState s0 = layer();
+  ErosionDiagnostics<2> d(s0, kUp, 0.005, 2600.0);
+  DemState s = s0;
+  s.atoms[3].x[1] = 0.0046;                // bottom just above the initial surface (0.004): counted
+  s.atoms[7].x[1] = 0.0044;                // still overlaps the initial surface: not counted
+  s.bodies[0].x = {0.008, 0.006, 0.0005};  // moved by (3, 4) mm
+  isph::Particles<2> fluid;
+  fluid.add(isph::Vec<2>(0.002, 0.002), isph::Vec<2>(0.0, 0.01), isph::kFluid);  // in the layer
+  fluid.add(isph::Vec<2>(0.002, 0.009), isph::Vec<2>(0.0, 1.0), isph::kFluid);   // above it
+  fluid.add(isph::Vec<2>(0.003, 0.001), isph::Vec<2>(0.0, 1.0), isph::kWall);    // not fluid
+  fluid.porosity = {0.5, 1.0, 1.0};
+  const auto m = d.measure(s, fluid);
+  EXPECT_EQ(m.fines_above, 1);
+  EXPECT_NEAR(m.fines_above_mass, 2600.0 * 4.0 / 3.0 * M_PI * 1.25e-10, 1e-20);
+  EXPECT_NEAR(m.skeleton_displacement, 0.005, 1e-15);
+  EXPECT_NEAR(m.max_pore_speed_ratio, 0.01 / 0.5 / 0.005, 1e-12);  // interstitial speed / v_in
+  // Column 0 (x = 0..2 mm) now reaches 5.1 mm; the median of the 5 columns stays 4 mm.
+  EXPECT_NEAR(m.surface_height, 0.004, 1e-15);
+}
+
+}  // namespace
+}  // namespace isphdem
