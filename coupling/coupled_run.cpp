@@ -5,20 +5,13 @@
 #include <stdexcept>
 
 #include "dem_case_config.hpp"
+#include "stopwatch.hpp"
 
 namespace isphdem {
 
 namespace {
 
-class Stopwatch {
- public:
-  explicit Stopwatch(double& bucket) : bucket_(bucket), t0_(omp_get_wtime()) {}
-  ~Stopwatch() { bucket_ += omp_get_wtime() - t0_; }
-
- private:
-  double& bucket_;
-  double t0_;
-};
+using isph::Stopwatch;
 
 }  // namespace
 

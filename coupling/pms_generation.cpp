@@ -7,6 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "format_number.hpp"
+
 namespace isphdem {
 
 namespace {
@@ -16,12 +18,7 @@ struct Sphere {
   double r;
 };
 
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
+std::string num(double v) { return isph::format_number(v); }
 
 template <int Dim>
 isph::Vec<Dim> in_plane(const Vec3& a) {

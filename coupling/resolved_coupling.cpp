@@ -6,16 +6,13 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "format_number.hpp"
+
 namespace isphdem {
 
 namespace {
 
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
+std::string num(double v) { return isph::format_number(v); }
 
 Eigen::Matrix3d rotation_of(const Quat& q) {
   return Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();

@@ -6,19 +6,16 @@
 #include <cmath>
 #include <sstream>
 
+#include "format_number.hpp"
 #include "free_surface.hpp"
 #include "rigid_solids.hpp"
+#include "stopwatch.hpp"
 
 namespace isph {
 
 namespace {
 
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(4);
-  s << v;
-  return s.str();
-}
+std::string fmt(double v) { return format_number(v, 4); }
 
 template <int Dim>
 std::string fmt(const Vec<Dim>& v) {
@@ -29,17 +26,6 @@ std::string fmt(const Vec<Dim>& v) {
   s << ")";
   return s.str();
 }
-
-// Accumulates wall-clock seconds into one timing bucket.
-class Stopwatch {
- public:
-  explicit Stopwatch(double& bucket) : bucket_(bucket), t0_(omp_get_wtime()) {}
-  ~Stopwatch() { bucket_ += omp_get_wtime() - t0_; }
-
- private:
-  double& bucket_;
-  double t0_;
-};
 
 // Closest approach of two fluid particles, in spacings (see separate_close_pairs).
 constexpr double kMinPairDistance = 0.5;
