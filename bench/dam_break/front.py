@@ -39,7 +39,8 @@ def isphdem_frames(out_dir):
     for path in sorted(glob.glob(os.path.join(out_dir, "snap_*.h5"))):
         with h5py.File(path, "r") as f:
             kind = f["/fluid/kind"][...]
-            yield float(f.attrs["time"]), f["/fluid/position"][...][kind == 0][:, :2]
+            # x and the vertical (last) axis: in 3D the front is read in the x-z plane
+            yield float(f.attrs["time"]), f["/fluid/position"][...][kind == 0][:, [0, -1]]
 
 
 def liggghts_frames(dump, dt):
