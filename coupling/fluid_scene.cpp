@@ -43,6 +43,7 @@ std::vector<std::string> fluid_scene_keys() {
           "solver.max_iterations",
           "solver.surface_detection",
           "solver.surface_divergence",
+          "solver.surface_scan",
           "solver.smagorinsky",
           "solver.smagorinsky_constant",
           "inflow.min",
@@ -244,6 +245,7 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
     throw CaseError(std::string("'solver.surface_detection': ") + e.what());
   }
   cfg.surface.divergence = c.positive("solver.surface_divergence", Dim == 2 ? 1.5 : 2.4);
+  cfg.surface.scan = c.boolean("solver.surface_scan", cfg.surface.scan);
   cfg.smagorinsky = c.boolean("solver.smagorinsky", cfg.smagorinsky);
   cfg.smagorinsky_constant = c.positive("solver.smagorinsky_constant", cfg.smagorinsky_constant);
 

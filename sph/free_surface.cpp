@@ -1,6 +1,8 @@
 #include "free_surface.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace isph {
@@ -79,6 +81,29 @@ void mark_sparse_as_surface(Particles<Dim>& particles, const Neighbors<Dim>& nb,
 }
 
 template <int Dim>
+void mark_open_side_as_surface(Particles<Dim>& particles, const Neighbors<Dim>& nb) {
+  const int np = static_cast<int>(particles.size());
+  const double dx = particles.spacing;
+  std::vector<uint8_t> open(np, 0);
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < np; ++i) {
+    if (particles.kind[i] == kWall || particles.surface[i]) continue;
+    Vec<Dim> g = Vec<Dim>::Zero();
+    for (int k = nb.begin(i); k < nb.end(i); ++k) g += nb.dw[k];
+    // dw = grad_i W_ij points from i towards j, so its sum points to the crowded side. A
+    // symmetric support gives no direction and is interior.
+    if (g.norm() * dx * dx * dx < 1e-6 * nb.w_self * dx) continue;
+    const Vec<Dim> target = -g.normalized() * dx;  // relative to x_i, on the emptier side
+    double closest = std::numeric_limits<double>::infinity();
+    for (int k = nb.begin(i); k < nb.end(i); ++k)
+      closest = std::min(closest, (-nb.rij[k] - target).norm());  // x_j - x_i = -r_ij
+    open[i] = closest > dx;
+  }
+  for (int i = 0; i < np; ++i)
+    if (open[i]) particles.surface[i] = 1;
+}
+
+template <int Dim>
 int reference_neighbor_count(const Kernel<Dim>& kernel, double dx) {
   const int m = static_cast<int>(std::ceil(kernel.support() / dx)) + 1;
   int count = -1;  // the particle itself
@@ -100,6 +125,8 @@ template void position_divergence<2>(const Neighbors<2>&, double, std::vector<do
 template void position_divergence<3>(const Neighbors<3>&, double, std::vector<double>&);
 template void mark_sparse_as_surface<2>(Particles<2>&, const Neighbors<2>&, int, int);
 template void mark_sparse_as_surface<3>(Particles<3>&, const Neighbors<3>&, int, int);
+template void mark_open_side_as_surface<2>(Particles<2>&, const Neighbors<2>&);
+template void mark_open_side_as_surface<3>(Particles<3>&, const Neighbors<3>&);
 template int reference_neighbor_count<2>(const Kernel<2>&, double);
 template int reference_neighbor_count<3>(const Kernel<3>&, double);
 template void mark_free_surface<2>(Particles<2>&, const std::vector<double>&, double,

@@ -24,6 +24,7 @@ struct SurfaceCriteria {
   SurfaceDetection method = SurfaceDetection::NumberDensity;
   double density_ratio = 0.9;  // n_i / n0 below this: surface
   double divergence = 0.0;     // div r below this: surface (0: 1.5 in 2D, 2.4 in 3D)
+  bool scan = false;           // also mark_open_side_as_surface (below)
 };
 
 SurfaceDetection surface_detection_from_name(const std::string& name);
@@ -47,6 +48,16 @@ void mark_free_surface(Particles<Dim>& particles, const std::vector<double>& n, 
 template <int Dim>
 void mark_sparse_as_surface(Particles<Dim>& particles, const Neighbors<Dim>& nb, int min_fluid,
                             int min_all);
+
+// A top row squeezed together by converging flow reads as full by number density and by div r,
+// and a particle of it that takes more pressure than the row below dives (the circulation tank
+// broke up that way). Scan test, after Marrone et al. (2010) in a simple form: with n the unit
+// vector along -sum_j grad W_ij (towards the emptier side), a particle is on the surface when no
+// neighbour of any kind lies within one spacing of x_i + dx n. On a lattice the top row's
+// nearest candidate is 1.41 dx away (1.25 dx when squeezed to 0.75 dx), the row below has one
+// at 0; inside disordered fluid the point x_i + dx n is within 0.75 dx of some particle.
+template <int Dim>
+void mark_open_side_as_surface(Particles<Dim>& particles, const Neighbors<Dim>& nb);
 
 // Neighbours of an interior particle of a perfect lattice of spacing dx (20 in 2D at h = 1.3 dx).
 template <int Dim>

@@ -105,6 +105,7 @@ void IsphSolver<Dim>::update_geometry() {
     mark_sparse_as_surface(
         particles_, nb_, 3 * Dim,
         static_cast<int>(0.6 * reference_neighbor_count(kernel_, particles_.spacing)));
+    if (config_.surface.scan) mark_open_side_as_surface(particles_, nb_);
   } else
     std::fill(particles_.surface.begin(), particles_.surface.end(), 0);
   if (config_.free_surface) mark_dry_solids(particles_, nb_, config_.gravity);
