@@ -158,6 +158,33 @@ int run_dem_only(const CaseFile& c, const Arguments& args) {
   return rc;
 }
 
+// Advances `run` (FluidRun or CoupledRun) to settings.t_end with each output time as a landing
+// point, so snapshots fall on t = k * interval. A SimulationError stops the run: the progress
+// line is closed, `report` says where it stopped (the snapshots already written are complete),
+// and false comes back. `end_tolerance` is the relative slack on t_end.
+template <class Run, class StepCallback, class WriteSnapshot>
+bool run_to_end(Run& run, const RunSettings& settings, double end_tolerance,
+                const StepCallback& after_step, const WriteSnapshot& snapshot,
+                ProgressLine& progress, bool report, const fs::path& out) {
+  const auto& solver = run.solver();
+  try {
+    for (long k = 1; solver.time() < settings.t_end * (1.0 - end_tolerance); ++k) {
+      run.run_until(std::min(k * settings.output_interval, settings.t_end), after_step);
+      snapshot();
+    }
+  } catch (const isph::SimulationError& e) {
+    progress.finish();
+    if (report)
+      std::fprintf(stderr,
+                   "isphdem run: stopped at t = %g s, step %ld: %s\n"
+                   "  output written so far in %s is complete and valid.\n",
+                   solver.time(), solver.steps(), e.what(), out.string().c_str());
+    return false;
+  }
+  progress.finish();
+  return true;
+}
+
 template <int Dim>
 int run_case(const CaseFile& c, const Arguments& args) {
   const RunSettings settings = parse_run_settings(c);
@@ -217,21 +244,7 @@ int run_case(const CaseFile& c, const Arguments& args) {
     }
     progress.update(solver.time(), step);
   };
-  try {
-    // Each output time is a landing point of the run, so snapshots fall on t = k * interval.
-    for (long k = 1; solver.time() < settings.t_end * (1.0 - 1e-12); ++k) {
-      run.run_until(std::min(k * settings.output_interval, settings.t_end), after_step);
-      snapshot();
-    }
-  } catch (const isph::SimulationError& e) {
-    progress.finish();
-    std::fprintf(stderr,
-                 "isphdem run: stopped at t = %g s, step %ld: %s\n"
-                 "  output written so far in %s is complete and valid.\n",
-                 solver.time(), solver.steps(), e.what(), args.out.string().c_str());
-    return 1;
-  }
-  progress.finish();
+  if (!run_to_end(run, settings, 1e-12, after_step, snapshot, progress, true, args.out)) return 1;
 
   if (!args.quiet) {
     const double wall = omp_get_wtime() - start;
@@ -414,23 +427,10 @@ int run_coupled(const CaseFile& c, const Arguments& args) {
     }
     if (rank == 0) progress.update(solver.time(), step);
   };
-  try {
-    for (long k = 1; solver.time() < settings.t_end * (1.0 - 1e-9); ++k) {
-      run.run_until(std::min(k * settings.output_interval, settings.t_end), after_step);
-      snapshot();
-    }
-  } catch (const isph::SimulationError& e) {
-    progress.finish();
-    if (rank == 0)
-      std::fprintf(stderr,
-                   "isphdem run: stopped at t = %g s, step %ld: %s\n"
-                   "  output written so far in %s is complete and valid.\n",
-                   solver.time(), solver.steps(), e.what(), args.out.string().c_str());
-    backend.finalize();
-    return 1;
-  }
-  progress.finish();
+  const bool finished =
+      run_to_end(run, settings, 1e-9, after_step, snapshot, progress, rank == 0, args.out);
   backend.finalize();
+  if (!finished) return 1;
   if (talk) {
     const double wall = omp_get_wtime() - start;
     const auto& t = run.timings();

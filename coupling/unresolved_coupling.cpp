@@ -27,7 +27,7 @@ template <int Dim>
 void UnresolvedCoupling<Dim>::initialize(const DemState& dem, isph::IsphSolver<Dim>& solver) {
   const auto& d = solver.domain();
   for (const auto& a : dem.atoms) {
-    if (a.body != -1 && !settings_.clump_spheres) continue;
+    if (!maps(a)) continue;
     for (int k = 0; k < Dim; ++k)
       if (!d.periodic[k] && (a.x[k] < d.lo[k] || a.x[k] > d.hi[k]))
         throw std::runtime_error(
@@ -42,7 +42,7 @@ void UnresolvedCoupling<Dim>::before_fluid_step(const DemState& dem,
                                                 isph::IsphSolver<Dim>& solver) {
   grains_.clear();
   for (const auto& a : dem.atoms) {
-    if (a.body != -1 && !settings_.clump_spheres) continue;
+    if (!maps(a)) continue;
     Grain<Dim> g;
     g.tag = a.tag;
     for (int k = 0; k < Dim; ++k) g.x[k] = a.x[k], g.v[k] = a.v[k];

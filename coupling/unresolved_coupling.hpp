@@ -44,6 +44,10 @@ class UnresolvedCoupling final : public CouplingStage<Dim> {
   void after_fluid_step(const DemState& dem, const isph::IsphSolver<Dim>& solver, double dt,
                         DemLoads& loads) override;
 
+  // Whether this stage maps the atom as an unresolved grain (free spheres; clump members too
+  // with UnresolvedSettings::clump_spheres).
+  bool maps(const DemAtom& a) const { return a.body == -1 || settings_.clump_spheres; }
+
   // Totals of the last exchange, for diagnostics and the momentum test.
   const UnresolvedBalance<Dim>& balance() const { return balance_; }
   // Fine grains of the last exchange (in-plane parts in 2D), periodic images appended.
