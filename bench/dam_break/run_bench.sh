@@ -18,15 +18,7 @@ isphdem=$(realpath "$1"); work=${2:-bench_dam_break_out}
 RES=${RES:-20 30 40}; THREADS=${THREADS:-2}; DTF=${DTF:-0.1}; ALPHA=${ALPHA:-0.1}
 LOAD_MAX=${LOAD_MAX:-0.7}; LOAD_WAIT=${LOAD_WAIT:-120}
 mkdir -p "$work" && cd "$work"
-load1() { cut -d' ' -f1 /proc/loadavg; }
-wait_quiet() {
-  local waited=0
-  while /usr/bin/python3 -c "import sys; sys.exit(0 if $(load1) > $LOAD_MAX else 1)"; do
-    if ((waited >= LOAD_WAIT)); then echo "$(load1)!"; return; fi
-    sleep 10; waited=$((waited + 10))
-  done
-  load1
-}
+source "$here/../quiet_machine.sh"   # load1, busy, wait_quiet
 now() { date +%s.%N; }
 a=0.1
 echo "code,a_over_dx,particles,steps,wall_s,load,T_reached,mean_err,max_err" > results.csv

@@ -22,16 +22,7 @@ mkdir -p "$work" && cd "$work"
 py() { /usr/bin/python3 -c "$1"; }
 loop_time() { grep "^Loop time" "$1" | tail -1 | awk '{print $4}'; }
 atoms() { grep "^Loop time" "$1" | tail -1 | sed 's/.* with \([0-9]*\) atoms.*/\1/'; }
-load1() { cut -d' ' -f1 /proc/loadavg; }
-busy() { awk '/^cpu /{print ($2 + $3 + $4 + $7 + $8 + $9) / 100}' /proc/stat; }  # CPU-seconds
-wait_quiet() {
-  local waited=0
-  while py "import sys; sys.exit(0 if $(load1) > $LOAD_MAX else 1)"; do
-    if ((waited >= LOAD_WAIT)); then echo "$(load1)!"; return; fi
-    sleep 10; waited=$((waited + 10))
-  done
-  load1
-}
+source "$here/../quiet_machine.sh"   # load1, busy, wait_quiet
 # timed NAME CMD...: runs CMD after waiting for a quiet machine; sets LOAD and OTHER. A run that
 # other processes disturbed (OTHER > OTHER_MAX cores) is repeated, TRIES times at most.
 timed() {

@@ -40,17 +40,7 @@ fi
 [[ -x $isphdem ]] || { echo "no isphdem binary at $isphdem" >&2; exit 1; }
 mkdir -p "$work"
 
-load1() { cut -d' ' -f1 /proc/loadavg; }
-busy() { awk '/^cpu /{print ($2 + $3 + $4 + $7 + $8 + $9) / 100}' /proc/stat; }   # CPU-seconds
-# Wait for a quiet machine; echoes the 1-min load the run starts at (with '!' if never quiet).
-wait_quiet() {
-  local waited=0
-  while /usr/bin/python3 -c "import sys; sys.exit(0 if $(load1) > $LOAD_MAX else 1)"; do
-    if ((waited >= LOAD_WAIT)); then echo "$(load1)!"; return; fi
-    sleep 10; waited=$((waited + 10))
-  done
-  load1
-}
+source "$here/../quiet_machine.sh"   # load1, busy, wait_quiet
 seconds() {   # "7.2s", "1m05s", "1h02m" -> seconds
   /usr/bin/python3 - "$1" <<'EOF'
 import re, sys
