@@ -10,7 +10,7 @@ PACKAGES=(
   libhdf5-dev
   libgtest-dev libgmock-dev
   libtomlplusplus-dev
-  python3-h5py python3-matplotlib   # plotting scripts, run with /usr/bin/python3
+  python3-h5py python3-matplotlib python3-pil   # plots (PIL: GIFs), run with /usr/bin/python3
   paraview                          # pvpython opens our XDMF in a test
 )
 
