@@ -12,6 +12,9 @@ void add_fluid_group(const isph::Particles<Dim>& p, Snapshot& snapshot) {
   g.add("pressure", p.p.data(), n);
   g.add("porosity", p.porosity.data(), n);
   g.add("kind", p.kind.data(), n);
+  g.add_generated<std::int32_t>("free_surface", n, 1, [&](std::size_t i, std::size_t) {
+    return p.kind[i] != isph::kWall && p.surface[i] ? 1 : 0;
+  });
   g.add("id", p.id.data(), n);
 }
 

@@ -81,26 +81,61 @@ void mark_sparse_as_surface(Particles<Dim>& particles, const Neighbors<Dim>& nb,
 }
 
 template <int Dim>
-void mark_open_side_as_surface(Particles<Dim>& particles, const Neighbors<Dim>& nb) {
+void mark_open_side_as_surface(Particles<Dim>& particles, const Neighbors<Dim>& nb,
+                               const std::vector<uint8_t>* dry, const Vec<Dim>* up) {
   const int np = static_cast<int>(particles.size());
   const double dx = particles.spacing;
   std::vector<uint8_t> open(np, 0);
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < np; ++i) {
     if (particles.kind[i] == kWall || particles.surface[i]) continue;
-    Vec<Dim> g = Vec<Dim>::Zero();
-    for (int k = nb.begin(i); k < nb.end(i); ++k) g += nb.dw[k];
-    // dw = grad_i W_ij points from i towards j, so its sum points to the crowded side. A
-    // symmetric support gives no direction and is interior.
-    if (g.norm() * dx * dx * dx < 1e-6 * nb.w_self * dx) continue;
-    const Vec<Dim> target = -g.normalized() * dx;  // relative to x_i, on the emptier side
-    double closest = std::numeric_limits<double>::infinity();
-    for (int k = nb.begin(i); k < nb.end(i); ++k)
-      closest = std::min(closest, (-nb.rij[k] - target).norm());  // x_j - x_i = -r_ij
-    open[i] = closest > dx;
+    auto ignored = [&](int k) { return dry && (*dry)[nb.index[k]]; };
+    Vec<Dim> n;
+    if (up) {
+      n = *up;
+    } else {
+      Vec<Dim> g = Vec<Dim>::Zero();
+      for (int k = nb.begin(i); k < nb.end(i); ++k)
+        if (!ignored(k)) g += nb.dw[k];
+      // dw = grad_i W_ij points from i towards j, so its sum points to the crowded side. A
+      // symmetric support gives no direction and is interior.
+      if (g.norm() * dx * dx * dx < 1e-6 * nb.w_self * dx) continue;
+      n = -g.normalized();  // towards the emptier side
+    }
+    const Vec<Dim> target = dx * n;  // relative to x_i
+    bool occupied = false;
+    for (int k = nb.begin(i); k < nb.end(i) && !occupied; ++k) {
+      if (ignored(k)) continue;
+      const Vec<Dim> r = -nb.rij[k];  // x_j - x_i
+      occupied = (r - target).norm() < dx && r.dot(n) > 0.5 * r.norm();
+    }
+    open[i] = !occupied;
   }
   for (int i = 0; i < np; ++i)
     if (open[i]) particles.surface[i] = 1;
+}
+
+template <int Dim>
+void mark_dry_walls(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
+                    const Vec<Dim>& gravity, double rho0, std::vector<uint8_t>& dry) {
+  const auto& P = particles;
+  const int np = static_cast<int>(P.size());
+  dry.assign(np, 0);
+  if (gravity.squaredNorm() == 0.0) return;
+  const Vec<Dim> up = -gravity.normalized();
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < np; ++i) {
+    if (P.kind[i] != kWall) continue;
+    double ws = 0.0, ps = 0.0, height = 0.0;
+    for (int k = nb.begin(i); k < nb.end(i); ++k) {
+      const int j = nb.index[k];
+      if (P.kind[j] == kWall) continue;
+      ws += nb.w[k];
+      ps += nb.w[k] * (P.p[j] + rho0 * gravity.dot(nb.rij[k]));  // r_ij = x_w - x_f
+      height += nb.w[k] * up.dot(nb.rij[k]);
+    }
+    dry[i] = ws > 0.0 && ps < 0.0 && height > 0.25 * P.spacing * ws;
+  }
 }
 
 template <int Dim>
@@ -125,8 +160,14 @@ template void position_divergence<2>(const Neighbors<2>&, double, std::vector<do
 template void position_divergence<3>(const Neighbors<3>&, double, std::vector<double>&);
 template void mark_sparse_as_surface<2>(Particles<2>&, const Neighbors<2>&, int, int);
 template void mark_sparse_as_surface<3>(Particles<3>&, const Neighbors<3>&, int, int);
-template void mark_open_side_as_surface<2>(Particles<2>&, const Neighbors<2>&);
-template void mark_open_side_as_surface<3>(Particles<3>&, const Neighbors<3>&);
+template void mark_open_side_as_surface<2>(Particles<2>&, const Neighbors<2>&,
+                                           const std::vector<uint8_t>*, const Vec<2>*);
+template void mark_open_side_as_surface<3>(Particles<3>&, const Neighbors<3>&,
+                                           const std::vector<uint8_t>*, const Vec<3>*);
+template void mark_dry_walls<2>(const Particles<2>&, const Neighbors<2>&, const Vec<2>&, double,
+                                std::vector<uint8_t>&);
+template void mark_dry_walls<3>(const Particles<3>&, const Neighbors<3>&, const Vec<3>&, double,
+                                std::vector<uint8_t>&);
 template int reference_neighbor_count<2>(const Kernel<2>&, double);
 template int reference_neighbor_count<3>(const Kernel<3>&, double);
 template void mark_free_surface<2>(Particles<2>&, const std::vector<double>&, double,

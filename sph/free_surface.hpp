@@ -51,13 +51,33 @@ void mark_sparse_as_surface(Particles<Dim>& particles, const Neighbors<Dim>& nb,
 
 // A top row squeezed together by converging flow reads as full by number density and by div r,
 // and a particle of it that takes more pressure than the row below dives (the circulation tank
-// broke up that way). Scan test, after Marrone et al. (2010) in a simple form: with n the unit
-// vector along -sum_j grad W_ij (towards the emptier side), a particle is on the surface when no
-// neighbour of any kind lies within one spacing of x_i + dx n. On a lattice the top row's
-// nearest candidate is 1.41 dx away (1.25 dx when squeezed to 0.75 dx), the row below has one
-// at 0; inside disordered fluid the point x_i + dx n is within 0.75 dx of some particle.
+// broke up that way). Scan test, a simple form of Marrone et al. (2010): with n a unit direction
+// out of the water, a particle is on the surface when no neighbour j lies within one spacing of
+// x_i + dx n and within 60 degrees of n as seen from x_i. The cone leaves out the neighbours
+// beside i in a squeezed row (Marrone's 45-degree umbrella of height h = 1.3 dx was tried and
+// also marked the lower row of a staggered top layer, two p = 0 rows 0.66 dx apart, which lifted
+// it). n is `up` (against gravity) when given: next to a wall, and in a top layer whose rows are
+// staggered by diverging surface flow, -sum_j grad W_ij tilts by 30 degrees and more, and a row
+// was then marked or missed by that tilt alone. Without `up`, n is along -sum_j grad W_ij
+// (towards the emptier side). Walls flagged in `dry` (mark_dry_walls) take no part: a wall rising
+// above the water covers the contact-line particle, which, read as interior with a one-sided
+// support, was pulled down into the corner in the circulation tank.
 template <int Dim>
-void mark_open_side_as_surface(Particles<Dim>& particles, const Neighbors<Dim>& nb);
+void mark_open_side_as_surface(Particles<Dim>& particles, const Neighbors<Dim>& nb,
+                               const std::vector<uint8_t>* dry = nullptr,
+                               const Vec<Dim>* up = nullptr);
+
+// Wall particles in the air. The Adami extrapolation p_w = <p_f + rho g.(x_w - x_f)> over the
+// fluid neighbours (with the last solved fluid pressures) continues the hydrostatic field up past
+// the water line, so it is negative for a wall above the water; a wall is flagged dry when that
+// value is negative and it sits above its fluid neighbours' centroid by more than dx/4 along -g.
+// The bottom of a submerged wall (the inner walls' lower ends) extrapolates a positive pressure.
+// Only the surface scan uses the flag: the pressure rows keep the extrapolation, whose negative
+// values are what balances the top row's hydrostatics next to the wall (p = 0 sits on the top
+// particle row, half a spacing below the water line).
+template <int Dim>
+void mark_dry_walls(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
+                    const Vec<Dim>& gravity, double rho0, std::vector<uint8_t>& dry);
 
 // Neighbours of an interior particle of a perfect lattice of spacing dx (20 in 2D at h = 1.3 dx).
 template <int Dim>

@@ -105,7 +105,16 @@ void IsphSolver<Dim>::update_geometry() {
     mark_sparse_as_surface(
         particles_, nb_, 3 * Dim,
         static_cast<int>(0.6 * reference_neighbor_count(kernel_, particles_.spacing)));
-    if (config_.surface.scan) mark_open_side_as_surface(particles_, nb_);
+    if (config_.surface.scan) {
+      // Before the first solve every pressure is zero and a roof would read as dry.
+      if (steps_ > 0)
+        mark_dry_walls(particles_, nb_, config_.gravity, config_.density, dry_wall_);
+      else
+        dry_wall_.assign(particles_.size(), 0);
+      const Vec<Dim> up = -config_.gravity.normalized();
+      mark_open_side_as_surface(particles_, nb_, &dry_wall_,
+                                config_.gravity.squaredNorm() > 0.0 ? &up : nullptr);
+    }
   } else
     std::fill(particles_.surface.begin(), particles_.surface.end(), 0);
   if (config_.free_surface) mark_dry_solids(particles_, nb_, config_.gravity);
@@ -243,7 +252,7 @@ void IsphSolver<Dim>::predict(double dt) {
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < n; ++i) {
     if (P.kind[i] == kForcing) {
-      u_star_[i] = zone_of(P.x[i])->velocity;
+      u_star_[i] = zone_of(P.x[i])->velocity_at(time_ + dt);
       continue;
     }
     // Walls take the body acceleration too: their pressure rows impose dp/dn = rho (g - a_w).n,

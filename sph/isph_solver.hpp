@@ -8,6 +8,7 @@
 //   advection  x += dt u, plus particle shifting
 // In porous regions (eps < 1 or K > 0 on some particle) the predictor, the PPE coefficient and
 // the corrector take the Darcy-Brinkman form of porous_medium.hpp.
+#include <cmath>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -37,6 +38,14 @@ template <int Dim>
 struct ForcingZone {
   Vec<Dim> lo = Vec<Dim>::Zero(), hi = Vec<Dim>::Zero();
   Vec<Dim> velocity = Vec<Dim>::Zero();
+  // Start-up time [s]: the velocity eases in as (1 - cos(pi t / ramp)) / 2. Switching the pump
+  // on in one step gives the whole loop an impulse that rings the tank's sloshing modes, and
+  // the contact lines then move along the walls for the rest of the run.
+  double ramp = 0.0;
+  Vec<Dim> velocity_at(double t) const {
+    if (!(ramp > 0.0) || t >= ramp) return velocity;
+    return 0.5 * (1.0 - std::cos(M_PI * t / ramp)) * velocity;
+  }
   bool contains(const Vec<Dim>& x) const {
     return (x.array() >= lo.array()).all() && (x.array() <= hi.array()).all();
   }
@@ -152,7 +161,7 @@ class IsphSolver {
   std::vector<double> number_density_, divergence_r_, rhs_, eddy_viscosity_;
   double max_eddy_viscosity_ = 0.0;
   std::vector<Vec<Dim>> u_star_, wall_ghost_, shift_;
-  std::vector<uint8_t> operator_mode_, full_support_, shift_mode_;
+  std::vector<uint8_t> operator_mode_, full_support_, shift_mode_, dry_wall_;
   Eigen::VectorXd pressure_;
 };
 

@@ -95,6 +95,14 @@ TEST(BadInput, WrongTypeNamesTheExpectedType) {
   EXPECT_NE(r.output.find("an array of 2 numbers"), std::string::npos);
 }
 
+TEST(BadInput, NegativeInflowRamp) {
+  const Result r = run_bad_case(
+      "inflow_ramp", with(kGoodCase, "[time]",
+                          "[inflow]\nmin = [0.2, 0.2]\nmax = [0.4, 0.4]\nvelocity = 0.01\n"
+                          "direction = [0.0, 1.0]\nramp = -0.5\n[time]"));
+  EXPECT_NE(r.output.find("'inflow.ramp' must be >= 0"), std::string::npos);
+}
+
 TEST(BadInput, UnstableExplicitTimeStepNamesTheLimit) {
   const Result r =
       run_bad_case("unstable_dt", with(kGoodCase, "end = 0.05", "end = 0.05\ndt = 0.1"));

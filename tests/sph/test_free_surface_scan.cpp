@@ -2,6 +2,7 @@
 // when squeezed together; the rows below and a disordered interior are not.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "free_surface.hpp"
@@ -17,9 +18,12 @@ struct Block {
   Neighbors<2> nb;
 };
 
-// A 20 x 10 water block of spacing dx on a floor and between side walls (periodic in x), the
-// top row optionally squeezed sideways to `squeeze` dx.
-Block make_block(double squeeze, double jitter) {
+// A 20 x 10 water block of spacing dx on a floor, the top row optionally squeezed sideways to
+// `squeeze` dx. Periodic in x, or between side walls that rise 5 dx above the water and with a
+// submerged plate in the middle. With `hex_top` the two top rows are one staggered layer instead
+// (spacing 10/7 dx, the lower row 0.66 dx down in the gaps), as diverging surface flow arranges
+// them: the lower row is not surface.
+Block make_block(double squeeze, double jitter, bool side_walls = false, bool hex_top = false) {
   const double dx = 0.01;
   Block b;
   b.p.spacing = dx;
@@ -28,19 +32,38 @@ Block make_block(double squeeze, double jitter) {
   std::uniform_real_distribution<double> u(-jitter, jitter);
   for (int j = -3; j < 10; ++j) {
     const bool top = j == 9;
+    if (hex_top && j >= 8) {
+      const double sx = 20.0 / 14.0 * dx;
+      for (int i = 0; i < 14; ++i)
+        b.p.add(Vec<2>((i + (top ? 0.5 : 1.0)) * sx, top ? 9.5 * dx : 8.84 * dx), Vec<2>::Zero(),
+                kFluid);
+      continue;
+    }
     const int n = top ? static_cast<int>(20 / squeeze) : 20;
     for (int i = 0; i < n; ++i) {
       const double sx = top ? squeeze * dx : dx;
       Vec<2> x((i + 0.5) * sx, (j + 0.5) * dx);
-      if (j >= 0 && j < 8) x += Vec<2>(u(rng), u(rng)) * dx;
-      b.p.add(x, Vec<2>::Zero(), j < 0 ? kWall : kFluid);
+      // With side walls, a submerged plate (two rows, 10 dx wide) whose underside is a roof.
+      const bool plate = side_walls && (j == 4 || j == 5) && i >= 5 && i < 15;
+      if (j >= 0 && j < 8 && !plate) x += Vec<2>(u(rng), u(rng)) * dx;
+      b.p.add(x, Vec<2>::Zero(), j < 0 || plate ? kWall : kFluid);
     }
   }
+  if (side_walls)
+    for (int j = -3; j < 15; ++j)
+      for (int i = 0; i < 3; ++i) {
+        b.p.add(Vec<2>(-(i + 0.5) * dx, (j + 0.5) * dx), Vec<2>::Zero(), kWall);
+        b.p.add(Vec<2>(0.2 + (i + 0.5) * dx, (j + 0.5) * dx), Vec<2>::Zero(), kWall);
+      }
   b.p.surface.assign(b.p.size(), 0);
   Domain<2> dom;
   dom.lo = Vec<2>(0.0, -0.05);
   dom.hi = Vec<2>(0.2, 0.2);
-  dom.periodic[0] = true;
+  dom.periodic[0] = !side_walls;
+  if (side_walls) {
+    dom.lo[0] = -0.05;
+    dom.hi[0] = 0.25;
+  }
   Kernel<2> W(KernelType::WendlandC2, 1.3 * dx);
   NeighborSearch<2> search(dom, W.support());
   search.sort(b.p);
@@ -48,9 +71,26 @@ Block make_block(double squeeze, double jitter) {
   return b;
 }
 
-void check(double squeeze, double jitter) {
-  Block b = make_block(squeeze, jitter);
-  mark_open_side_as_surface(b.p, b.nb);
+void check(double squeeze, double jitter, bool side_walls = false, bool hex_top = false,
+           bool use_up = true) {
+  Block b = make_block(squeeze, jitter, side_walls, hex_top);
+  // Hydrostatic pressures (p = 0 on the top row) from which the walls' dryness is judged.
+  const double rho = 1000.0, g = 9.81, y_top = 0.095;
+  for (std::size_t i = 0; i < b.p.size(); ++i)
+    if (b.p.kind[i] != kWall) b.p.p[i] = rho * g * std::max(y_top - b.p.x[i][1], 0.0);
+  std::vector<uint8_t> dry;
+  mark_dry_walls(b.p, b.nb, Vec<2>(0.0, -g), rho, dry);
+  int dry_below = 0, dry_count = 0;
+  for (std::size_t i = 0; i < b.p.size(); ++i) {
+    dry_count += dry[i];
+    dry_below += dry[i] && b.p.x[i][1] < y_top;
+  }
+  EXPECT_EQ(dry_below, 0) << "walls beside the water must not read as dry";
+  if (side_walls) {
+    EXPECT_GT(dry_count, 0);
+  }
+  const Vec<2> up(0.0, 1.0);
+  mark_open_side_as_surface(b.p, b.nb, &dry, use_up ? &up : nullptr);
   int top = 0, top_marked = 0, below_marked = 0;
   for (std::size_t i = 0; i < b.p.size(); ++i) {
     if (b.p.kind[i] == kWall) {
@@ -59,20 +99,34 @@ void check(double squeeze, double jitter) {
     }
     const bool is_top = b.p.x[i][1] > 0.09;
     top += is_top;
+    if (is_top && !b.p.surface[i])
+      std::printf("  unmarked top-row particle at x = %.3f dx\n", b.p.x[i][0] / b.p.spacing);
     if (is_top)
       top_marked += b.p.surface[i];
     else
       below_marked += b.p.surface[i];
   }
-  std::printf("squeeze %.2f, jitter %.2f dx: top row %d/%d marked, %d below marked\n", squeeze,
-              jitter, top_marked, top, below_marked);
+  std::printf("squeeze %.2f, jitter %.2f dx%s%s%s: top row %d/%d marked, %d below marked\n",
+              squeeze, jitter, side_walls ? ", walls above the water" : "",
+              hex_top ? ", staggered top layer" : "", use_up ? "" : ", n from grad W", top_marked,
+              top, below_marked);
   EXPECT_EQ(top_marked, top);
   EXPECT_EQ(below_marked, 0);
 }
 
 TEST(FreeSurfaceScan, TopRowMarkedRowsBelowNot) { check(1.0, 0.0); }
+TEST(FreeSurfaceScan, TopRowMarkedWithNormalFromKernelGradient) {
+  check(1.0, 0.0, false, false, false);
+}
 TEST(FreeSurfaceScan, SqueezedTopRowStillMarked) { check(0.75, 0.0); }
 TEST(FreeSurfaceScan, DisorderedInteriorNotMarked) { check(1.0, 0.15); }
+// The circulation tank's break-up: a top row squeezed to 0.65 dx against a wall that rises above
+// the water, where the wall tilts n away from it.
+TEST(FreeSurfaceScan, SqueezedTopRowAtDryWallMarked) { check(0.65, 0.0, true); }
+TEST(FreeSurfaceScan, DisorderedInteriorBetweenDryWallsNotMarked) { check(1.0, 0.15, true); }
+// Marrone's 45-degree umbrella with h = 1.3 dx marked the lower row of this layer too; two p = 0
+// rows 0.66 dx apart lifted it in the circulation tank.
+TEST(FreeSurfaceScan, StaggeredTopLayerOnlyUpperRowMarked) { check(1.0, 0.0, false, true); }
 
 }  // namespace
 }  // namespace isph
