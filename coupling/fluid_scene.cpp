@@ -268,7 +268,7 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
       throw CaseError(
           "'inflow.direction' must be a non-zero vector (or set gravity for \"upward\")");
     z.velocity = c.number("inflow.velocity") * dir.normalized();
-    z.ramp = c.has("inflow.ramp") ? c.number("inflow.ramp") : 0.0;
+    z.ramp = c.number("inflow.ramp", 0.0);
     if (z.ramp < 0.0) throw CaseError("'inflow.ramp' must be >= 0 s (0: full velocity at once)");
     cfg.forcing.push_back(z);
   }

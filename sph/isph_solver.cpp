@@ -111,9 +111,9 @@ void IsphSolver<Dim>::update_geometry() {
         mark_dry_walls(particles_, nb_, config_.gravity, config_.density, dry_wall_);
       else
         dry_wall_.assign(particles_.size(), 0);
-      const Vec<Dim> up = -config_.gravity.normalized();
-      mark_open_side_as_surface(particles_, nb_, &dry_wall_,
-                                config_.gravity.squaredNorm() > 0.0 ? &up : nullptr);
+      const bool gravity = config_.gravity.squaredNorm() > 0.0;
+      const Vec<Dim> up = gravity ? Vec<Dim>(-config_.gravity.normalized()) : Vec<Dim>::Zero();
+      mark_open_side_as_surface(particles_, nb_, &dry_wall_, gravity ? &up : nullptr);
     }
   } else
     std::fill(particles_.surface.begin(), particles_.surface.end(), 0);
