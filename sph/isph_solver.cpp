@@ -181,10 +181,16 @@ void IsphSolver<Dim>::compute_wall_ghosts() {
   // wall slips (0.6% of the peak in Poiseuille flow). Where the wall geometry is known, the
   // fluid velocity is extrapolated linearly instead: with d_w the particle's distance to the
   // wall surface and d' that of the fluid-neighbour centroid, u_g = v_w - (d_w/d')(u~ - v_w).
+  //
+  // PMS solids get the same no-slip extrapolation through their body's surface, half a spacing
+  // beyond the outermost particles (sph/rigid_solids.hpp), from the fluid neighbours only. With
+  // the solids' own rigid velocity the fluid slipped over that half spacing, and the Stokes drag
+  // of a sphere was that of one half a spacing smaller (-26% at d = 5 dx).
   wall_ghost_.resize(n);
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < n; ++i) {
-    if (P.kind[i] != kWall) {
+    const bool solid = P.kind[i] == kSolid && P.surface[i] != kDrySolid;
+    if (P.kind[i] != kWall && !solid) {
       wall_ghost_[i] = P.v[i];
       continue;
     }
@@ -192,7 +198,7 @@ void IsphSolver<Dim>::compute_wall_ghosts() {
     Vec<Dim> vs = Vec<Dim>::Zero(), offset = Vec<Dim>::Zero();
     for (int k = nb_.begin(i); k < nb_.end(i); ++k) {
       const int j = nb_.index[k];
-      if (P.kind[j] == kWall) continue;
+      if (P.kind[j] == kWall || (solid && P.kind[j] == kSolid)) continue;
       ws += nb_.w[k];
       vs += nb_.w[k] * P.v[j];
       offset -= nb_.w[k] * nb_.rij[k];  // x_j - x_i
@@ -211,7 +217,7 @@ void IsphSolver<Dim>::compute_wall_ghosts() {
       ratio = P.wall_distance[i] / dc;
     }
     const Vec<Dim> rel = vs - P.v[i];
-    if (config_.wall == WallSlip::NoSlip) {
+    if (solid || config_.wall == WallSlip::NoSlip) {
       wall_ghost_[i] = P.v[i] - ratio * rel;
     } else {  // free slip: tangential velocity copied, normal velocity mirrored
       const Vec<Dim> rn = nrm.squaredNorm() > 0.0 ? Vec<Dim>(rel.dot(nrm) * nrm) : Vec<Dim>::Zero();

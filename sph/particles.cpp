@@ -19,6 +19,7 @@ void Particles<Dim>::add(const Vec<Dim>& pos, const Vec<Dim>& vel, int32_t k) {
   wall_distance.push_back(0.0);
   body.push_back(-1);
   body_offset.push_back(Vec<Dim>::Zero());
+  body_normal.push_back(Vec<Dim>::Zero());
   solid_force.push_back(Vec<Dim>::Zero());
 }
 

@@ -29,9 +29,11 @@ struct Particles {
   std::vector<Vec<Dim>> normal;
   std::vector<double> wall_distance;
   // PMS solids (kind kSolid, sph/rigid_solids.hpp): rigid body index (-1 otherwise), position in
-  // the body frame, and the fluid force on the particle in the last step (N; per unit depth in 2D).
+  // the body frame, the outward surface normal in the body frame (zero deep inside), and the
+  // fluid force on the particle in the last step (N; per unit depth in 2D).
   std::vector<int32_t> body;
   std::vector<Vec<Dim>> body_offset;
+  std::vector<Vec<Dim>> body_normal;
   std::vector<Vec<Dim>> solid_force;
 
   double volume = 0.0;   // particle volume dx^Dim (uniform spacing)
@@ -63,6 +65,7 @@ struct Particles {
     f(wall_distance);
     f(body);
     f(body_offset);
+    f(body_normal);
     f(solid_force);
   }
 };

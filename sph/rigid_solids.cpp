@@ -1,6 +1,9 @@
 #include "rigid_solids.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -23,15 +26,85 @@ AngularVec<3> moment<3>(const Vec<3>& r, const Vec<3>& f) {
   return r.cross(f);
 }
 
+namespace {
+
+// Depth below the body surface and outward normal of each particle of one body, from the
+// particle set itself: the surface lies half a spacing beyond the outermost particles, as a
+// wall's surface lies half a spacing beyond its first layer. The nearest lattice node not taken
+// by the body (searched up to kReach spacings) gives the depth; the directions to all nodes at
+// that distance give the normal (a staircase corner gets the diagonal). Particles with no free
+// node within kReach have no fluid within a kernel support: depth kReach dx, normal zero.
+constexpr int kReach = 3;
+
+template <int Dim>
+void surface_geometry(const std::vector<Vec<Dim>>& x, double dx, std::vector<double>& depth,
+                      std::vector<Vec<Dim>>& normal) {
+  using Key = std::array<long, Dim>;
+  auto key = [&](const Vec<Dim>& y) {
+    Key k;
+    for (int a = 0; a < Dim; ++a) k[a] = std::lround((y[a] - x.front()[a]) / dx);
+    return k;
+  };
+  std::set<Key> taken;
+  for (const auto& y : x) taken.insert(key(y));
+  depth.assign(x.size(), kReach * dx);
+  normal.assign(x.size(), Vec<Dim>::Zero());
+  std::vector<Key> offsets;
+  Key o;
+  o.fill(-kReach);
+  while (true) {
+    if (std::any_of(o.begin(), o.end(), [](long c) { return c != 0; })) offsets.push_back(o);
+    int a = 0;
+    while (a < Dim && o[a] == kReach) o[a++] = -kReach;
+    if (a == Dim) break;
+    ++o[a];
+  }
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const Key k = key(x[i]);
+    double nearest = kReach + 0.5;  // in spacings
+    for (const auto& off : offsets) {
+      double d2 = 0;
+      Key q;
+      for (int a = 0; a < Dim; ++a) {
+        q[a] = k[a] + off[a];
+        d2 += static_cast<double>(off[a] * off[a]);
+      }
+      if (std::sqrt(d2) < nearest && !taken.count(q)) nearest = std::sqrt(d2);
+    }
+    if (nearest > kReach) continue;
+    Vec<Dim> n = Vec<Dim>::Zero();
+    for (const auto& off : offsets) {
+      Vec<Dim> d;
+      Key q;
+      for (int a = 0; a < Dim; ++a) {
+        q[a] = k[a] + off[a];
+        d[a] = static_cast<double>(off[a]);
+      }
+      if (std::abs(d.norm() - nearest) < 1e-9 && !taken.count(q)) n += d.normalized();
+    }
+    depth[i] = (nearest - 0.5) * dx;
+    if (n.squaredNorm() > 0.0) normal[i] = n.normalized();
+  }
+}
+
+}  // namespace
+
 template <int Dim>
 void add_rigid_body(Particles<Dim>& particles, int body, const std::vector<Vec<Dim>>& x,
                     const RigidPose<Dim>& pose) {
   if (body < 0) throw std::invalid_argument("rigid body index must not be negative");
-  for (const auto& xi : x) {
-    const Vec<Dim> r = xi - pose.x;
-    particles.add(xi, pose.v + rigid_velocity<Dim>(pose.omega, r), kSolid);
+  if (x.empty()) return;
+  std::vector<double> depth;
+  std::vector<Vec<Dim>> outward;
+  surface_geometry(x, particles.spacing, depth, outward);
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    const Vec<Dim> r = x[k] - pose.x;
+    particles.add(x[k], pose.v + rigid_velocity<Dim>(pose.omega, r), kSolid);
     particles.body.back() = body;
     particles.body_offset.back() = pose.rotation.transpose() * r;
+    particles.body_normal.back() = pose.rotation.transpose() * outward[k];
+    particles.normal.back() = outward[k];
+    particles.wall_distance.back() = depth[k];
   }
 }
 
@@ -51,6 +124,7 @@ void place_rigid_solids(Particles<Dim>& particles, const Domain<Dim>& domain,
     particles.x[i] = q.x + r;
     domain.wrap(particles.x[i]);
     particles.v[i] = q.v + rigid_velocity<Dim>(q.omega, r);
+    particles.normal[i] = q.rotation * particles.body_normal[i];
   }
 }
 

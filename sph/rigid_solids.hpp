@@ -51,7 +51,10 @@ template <int Dim>
 AngularVec<Dim> moment(const Vec<Dim>& r, const Vec<Dim>& f);
 
 // Appends solid particles of body `body` at the space positions `x`, taking their body-frame
-// offsets from `pose`, with the pose's rigid velocity.
+// offsets from `pose`, with the pose's rigid velocity. Each gets its depth below the body's
+// surface (wall_distance; the surface half a spacing beyond the outermost particles) and the
+// outward normal (normal, and body_normal in the body frame), so that the viscous term can put
+// the no-slip condition on that surface, as for walls (IsphSolver::compute_wall_ghosts).
 template <int Dim>
 void add_rigid_body(Particles<Dim>& particles, int body, const std::vector<Vec<Dim>>& x,
                     const RigidPose<Dim>& pose);
