@@ -228,9 +228,9 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
       s.particles.p[n] =
           -0.25 * cfg.density * U * U * (std::cos(2 * k * x[0]) + std::cos(2 * k * x[1]));
     }
-  } else if (init != "rest") {
-    throw CaseError("'initial.velocity' must be \"rest\" or \"taylor_green\" (got \"" + init +
-                    "\")");
+  } else if (init != "rest" && init != "inflow") {
+    throw CaseError("'initial.velocity' must be \"rest\", \"taylor_green\" or \"inflow\" (got \"" +
+                    init + "\")");
   }
 
   cfg.alpha_s = c.number("solver.alpha_s", cfg.alpha_s);
@@ -271,6 +271,16 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
     z.ramp = c.number("inflow.ramp", 0.0);
     if (z.ramp < 0.0) throw CaseError("'inflow.ramp' must be >= 0 s (0: full velocity at once)");
     cfg.forcing.push_back(z);
+  }
+  if (init == "inflow") {
+    // A uniform stream at the zone's full velocity (a wind tunnel started at speed): the first
+    // projection turns it into the potential flow round the bodies, which saves the spin-up.
+    if (cfg.forcing.empty())
+      throw CaseError(
+          "'initial.velocity = \"inflow\"' starts the fluid at the forcing zone's velocity: add "
+          "an [inflow] zone (inflow.mode = \"zone\")");
+    for (std::size_t n = 0; n < s.particles.size(); ++n)
+      if (s.particles.kind[n] == isph::kFluid) s.particles.v[n] = cfg.forcing.front().velocity;
   }
   cfg.shifting.enabled = c.boolean("solver.shifting", cfg.shifting.enabled);
   cfg.shifting.coefficient = c.number("solver.shifting_coefficient", cfg.shifting.coefficient);

@@ -25,15 +25,17 @@ namespace isphdem {
 
 std::vector<std::string> unresolved_keys();
 
-// The `[coupling]` table: which grains the fluid resolves.
+// The `[coupling]` table: which grains the fluid resolves (docs/resolved.md, "Case keys").
+// clang-format off
 //   [coupling]
-//   model = "unresolved"      # every grain unresolved, clump spheres too (default)
-//         | "semi-resolved"   # clumps resolved by PMS particles, free spheres unresolved
-//         | "resolved"        # clumps resolved, no porosity/drag stage
-//   slab_thickness = 1e-3     # quasi-2D: DEM slab thickness T [m] (alias
-//   unresolved.slab_thickness) pms_shape = "auto"        # "lattice" | "per_sphere" | "auto"
-//   (docs/resolved.md) pms_volume = "dem"        # "dem" | "particles" pms_overlap = 0.5         #
-//   fluid closer than this many dx to a PMS particle is removed
+//   model = "unresolved"       # every grain unresolved, clump spheres too (default)
+//         | "semi-resolved"    # clumps resolved by PMS particles, free spheres unresolved
+//         | "resolved"         # clumps resolved, no porosity/drag stage
+//   slab_thickness = 1e-3      # quasi-2D: DEM slab thickness T [m] (alias unresolved.slab_thickness)
+//   pms_shape = "auto"         # "lattice" | "per_sphere" | "auto"
+//   pms_volume = "dem"         # "dem" | "particles"
+//   pms_overlap = 0.5          # fluid closer than this many dx to a PMS particle is removed
+// clang-format on
 std::vector<std::string> coupling_keys();
 
 // Throws CaseError naming the key and the fix. fluid_h and viscosity come from the fluid scene.

@@ -103,6 +103,12 @@ TEST(BadInput, NegativeInflowRamp) {
   EXPECT_NE(r.output.find("'inflow.ramp' must be >= 0"), std::string::npos);
 }
 
+TEST(BadInput, InflowStartWithoutForcingZone) {
+  const Result r = run_bad_case(
+      "inflow_start", with(kGoodCase, "velocity = \"taylor_green\"", "velocity = \"inflow\""));
+  EXPECT_NE(r.output.find("add an [inflow] zone"), std::string::npos);
+}
+
 TEST(BadInput, UnstableExplicitTimeStepNamesTheLimit) {
   const Result r =
       run_bad_case("unstable_dt", with(kGoodCase, "end = 0.05", "end = 0.05\ndt = 0.1"));
