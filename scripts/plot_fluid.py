@@ -42,6 +42,11 @@ def parse_args(argv):
     p.add_argument("--clim", type=float, nargs=2, metavar=("MIN", "MAX"),
                    help="colour range (default: the data's)")
     p.add_argument("--dpi", type=int, default=150)
+    p.add_argument("--slab", type=float, metavar="HALF_WIDTH",
+                   help="3-D: plot only particles within HALF_WIDTH [m] of a plane normal to the "
+                        "axis left out of --axes (default: all, projected)")
+    p.add_argument("--slab-at", type=float, metavar="COORD",
+                   help="position of that plane (default: the middle of the particles' range)")
     return p.parse_args(argv)
 
 
@@ -102,11 +107,22 @@ def main(argv):
     cols = [AXIS[a] for a in axes]
     if max(cols) >= dim:
         raise SystemExit("plot_fluid: --axes %s needs 3-D positions" % axes)
+    kind = np.asarray(data.get("kind", np.zeros(len(pos), dtype=int))).reshape(-1)
+    values = field_values(data, args.field)
+    vel_all = np.atleast_2d(data["velocity"]) if "velocity" in data else None
+    if args.slab is not None and dim == 3:
+        # A section instead of a projection: in a projection the fluid in front hides the bodies.
+        normal = ({0, 1, 2} - set(cols)).pop()
+        at = args.slab_at
+        if at is None:
+            at = 0.5 * (pos[:, normal].min() + pos[:, normal].max())
+        keep = np.abs(pos[:, normal] - at) <= args.slab
+        pos, kind, values = pos[keep], kind[keep], values[keep]
+        if vel_all is not None:
+            vel_all = vel_all[keep]
     xy = pos[:, cols]
     n = len(pos)
-    kind = np.asarray(data.get("kind", np.zeros(n, dtype=int))).reshape(-1)
     coloured = (kind == KIND_FLUID) | (kind == KIND_FORCING)
-    values = field_values(data, args.field)
 
     fig, ax = plt.subplots(figsize=(8, 6))
     ax.set_aspect("equal")
@@ -126,8 +142,8 @@ def main(argv):
                         cmap="viridis", vmin=vmin, vmax=vmax, linewidths=0)
         particles.append(sc)
         fig.colorbar(sc, ax=ax, label=FIELDS[args.field])
-    if args.quiver > 0 and "velocity" in data and coloured.any():
-        vel = np.atleast_2d(data["velocity"])[:, cols]
+    if args.quiver > 0 and vel_all is not None and coloured.any():
+        vel = vel_all[:, cols]
         # A random 1/N subset: taking every N-th id draws stripes on lattice-ordered particles.
         fluid = np.flatnonzero(coloured)
         rng = np.random.default_rng(1)

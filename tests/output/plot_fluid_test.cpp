@@ -73,6 +73,16 @@ TEST_F(PlotFluid, ThreeDimensionalSnapshotIsProjected) {
   }
 }
 
+TEST_F(PlotFluid, ThreeDimensionalSectionKeepsArrowsWithTheirParticles) {
+  // --slab keeps a section of the particles; the velocity arrows must be filtered with them
+  // (an unfiltered velocity array has the wrong length and matplotlib refuses it).
+  const fs::path snap = isphdem::SnapshotWriter(dir_).write(output_test::sample(8, 1.0, 300, 3, 4));
+  const fs::path png = dir_ / "section.png";
+  const auto r = plot(snap, "-o " + quote(png.string()) + " --axes xz --slab 0.3 --quiver 3");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  expect_png(png);
+}
+
 TEST_F(PlotFluid, MissingFieldFailsWithoutWritingAPng) {
   isphdem::Snapshot s = output_test::sample(1, 0.0, 20, 2);
   auto& datasets = s.group("fluid").datasets;

@@ -241,7 +241,7 @@ TEST(ResolvedRelease, SpinningClumpInClosedBoxSpinsDownWithoutEnergyGain) {
   // and body together can only fall: a gain would be the explicit exchange feeding itself.
   // The bar's own spin decays monotonically. The system's angular momentum about the box centre
   // is not conserved even without viscosity (the square box's walls push back with pressure
-  // torques; measured: +5.5% at 0.1 s); it must end below where it started.
+  // torques; measured: +5.8% at 0.1 s); it must end below where it started.
   auto scene = tank<2>({"fluid.gravity=[0,0]", "fluid.viscosity=1e-3", "solver.free_surface=false",
                         "walls.boxes=[{min=[0,0],max=[0.2,0.2]}]"});
   const double dx = scene.particles.spacing, r = 0.02, T = 0.04, omega0 = 2.0, dt = 2e-3;
