@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "case_file.hpp"
+#include "case_keys.hpp"
 #include "coupled_run.hpp"
 #include "dem_case_config.hpp"
 #include "dem_liggghts_backend.hpp"
@@ -75,18 +76,6 @@ Arguments parse_arguments(int argc, char** argv) {
   if (a.out.empty())
     throw CaseError(std::string("no output directory given (--out DIR)\n") + kUsage);
   return a;
-}
-
-std::vector<std::string> known_keys() {
-  auto k = fluid_scene_keys();
-  const auto r = run_settings_keys();
-  k.insert(k.end(), r.begin(), r.end());
-  for (const auto& d : dem_table_keys()) k.push_back("dem." + d + (d == "variables" ? ".*" : ""));
-  const auto u = unresolved_keys();
-  k.insert(k.end(), u.begin(), u.end());
-  const auto cp = coupling_keys();
-  k.insert(k.end(), cp.begin(), cp.end());
-  return k;
 }
 
 // A case with [dem] and no fluid: the grains advance in chunks of dem.substeps, exactly as they
@@ -450,7 +439,7 @@ int run_main(int argc, char** argv) {
   Arguments args;
   try {
     args = parse_arguments(argc, argv);
-    const CaseFile c = CaseFile::load(args.case_file, args.overrides, known_keys());
+    const CaseFile c = CaseFile::load(args.case_file, args.overrides, case_keys());
     const bool has_dem = c.has("dem"), has_fluid = c.has("fluid");
     if (c.has("unresolved") && !(has_dem && has_fluid))
       throw CaseError(

@@ -20,25 +20,18 @@
 #include <vector>
 
 #include "case_file.hpp"
-#include "dem_case_config.hpp"
+#include "case_keys.hpp"
 #include "fluid_scene.hpp"
 #include "resolved_coupling.hpp"
-#include "run_settings.hpp"
-#include "unresolved_case.hpp"
 
 namespace {
 
 using namespace isphdem;
 
 FluidScene<2> stream() {
-  auto keys = fluid_scene_keys();
-  for (const auto& k : run_settings_keys()) keys.push_back(k);
-  for (const auto& k : coupling_keys()) keys.push_back(k);
-  for (const auto& d : dem_table_keys())
-    keys.push_back("dem." + d + (d == "variables" ? ".*" : ""));
   return build_fluid_scene<2>(
       CaseFile::load(std::string(ISPHDEM_SOURCE_DIR) + "/examples/cylinder_re20_2d/case.toml",
-                     {"particles.spacing=0.002"}, keys));
+                     {"particles.spacing=0.002"}, case_keys()));
 }
 
 // n clumps (n = k^2) of s x s dx-wide spheres on the lattice (one PMS particle per sphere, as in

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "case_file.hpp"
+#include "case_keys.hpp"
 #include "coupled_run.hpp"
 #include "dem_case_config.hpp"
 #include "dem_liggghts_backend.hpp"
@@ -16,18 +17,10 @@
 
 namespace isphdem::coupled_test {
 
-inline std::vector<std::string> coupled_keys() {
-  auto k = fluid_scene_keys();
-  for (const auto& v : run_settings_keys()) k.push_back(v);
-  for (const auto& d : dem_table_keys()) k.push_back("dem." + d + (d == "variables" ? ".*" : ""));
-  for (const auto& u : unresolved_keys()) k.push_back(u);
-  return k;
-}
-
 inline CaseFile load_coupled_example(const std::string& name,
                                      const std::vector<std::string>& overrides) {
   return CaseFile::load(std::string(ISPHDEM_SOURCE_DIR) + "/examples/" + name + "/case.toml",
-                        overrides, coupled_keys());
+                        overrides, case_keys());
 }
 
 template <int Dim>

@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "case_keys.hpp"
 #include "case_path.hpp"
-#include "dem_case_config.hpp"
 #include "fluid_run.hpp"
 #include "resolved_coupling.hpp"
 #include "unresolved_case.hpp"
@@ -41,14 +41,9 @@ struct DragResult {
 DragResult cylinder_drag() {
   // The example's geometry with the spacing set for D / dx.
   const double D = 0.01, R = 0.5 * D, dx = D / kDOverDx;
-  auto keys = all_fluid_keys();
-  for (const auto& d : dem_table_keys())
-    keys.push_back("dem." + d + (d == "variables" ? ".*" : ""));
-  for (const auto& k : unresolved_keys()) keys.push_back(k);
-  for (const auto& k : coupling_keys()) keys.push_back(k);
   char spacing[64];
   std::snprintf(spacing, sizeof spacing, "particles.spacing=%.17g", dx);
-  const CaseFile c = CaseFile::load(example("cylinder_re20_2d"), {spacing}, keys);
+  const CaseFile c = CaseFile::load(example("cylinder_re20_2d"), {spacing}, case_keys());
   const auto scene = build_fluid_scene<2>(c);
   isph::IsphSolver<2> solver(scene.config, scene.domain, scene.particles);
   const double U = scene.config.forcing.at(0).velocity.norm(), rho = scene.config.density;
