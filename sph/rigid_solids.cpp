@@ -47,41 +47,42 @@ void surface_geometry(const std::vector<Vec<Dim>>& x, double dx, std::vector<dou
   };
   std::set<Key> taken;
   for (const auto& y : x) taken.insert(key(y));
-  depth.assign(x.size(), kReach * dx);
-  normal.assign(x.size(), Vec<Dim>::Zero());
-  std::vector<Key> offsets;
+  // Lattice offsets within kReach spacings, nearest first.
+  struct Offset {
+    Key key;
+    Vec<Dim> d;  // in spacings
+    double length;
+  };
+  std::vector<Offset> offsets;
   Key o;
   o.fill(-kReach);
   while (true) {
-    if (std::any_of(o.begin(), o.end(), [](long c) { return c != 0; })) offsets.push_back(o);
+    Offset off{o, Vec<Dim>::Zero(), 0.0};
+    for (int a = 0; a < Dim; ++a) off.d[a] = static_cast<double>(o[a]);
+    off.length = off.d.norm();
+    if (off.length > 0.0 && off.length <= kReach) offsets.push_back(off);
     int a = 0;
     while (a < Dim && o[a] == kReach) o[a++] = -kReach;
     if (a == Dim) break;
     ++o[a];
   }
+  std::stable_sort(offsets.begin(), offsets.end(),
+                   [](const Offset& p, const Offset& q) { return p.length < q.length; });
+  depth.assign(x.size(), kReach * dx);
+  normal.assign(x.size(), Vec<Dim>::Zero());
   for (std::size_t i = 0; i < x.size(); ++i) {
     const Key k = key(x[i]);
-    double nearest = kReach + 0.5;  // in spacings
-    for (const auto& off : offsets) {
-      double d2 = 0;
-      Key q;
-      for (int a = 0; a < Dim; ++a) {
-        q[a] = k[a] + off[a];
-        d2 += static_cast<double>(off[a] * off[a]);
-      }
-      if (std::sqrt(d2) < nearest && !taken.count(q)) nearest = std::sqrt(d2);
-    }
-    if (nearest > kReach) continue;
+    double nearest = -1.0;
     Vec<Dim> n = Vec<Dim>::Zero();
     for (const auto& off : offsets) {
-      Vec<Dim> d;
+      if (nearest >= 0.0 && off.length > nearest + 1e-9) break;
       Key q;
-      for (int a = 0; a < Dim; ++a) {
-        q[a] = k[a] + off[a];
-        d[a] = static_cast<double>(off[a]);
-      }
-      if (std::abs(d.norm() - nearest) < 1e-9 && !taken.count(q)) n += d.normalized();
+      for (int a = 0; a < Dim; ++a) q[a] = k[a] + off.key[a];
+      if (taken.count(q)) continue;
+      nearest = off.length;
+      n += off.d / off.length;
     }
+    if (nearest < 0.0) continue;
     depth[i] = (nearest - 0.5) * dx;
     if (n.squaredNorm() > 0.0) normal[i] = n.normalized();
   }
