@@ -17,12 +17,18 @@ inline std::string example(const std::string& name) {
   return std::string(ISPHDEM_SOURCE_DIR) + "/examples/" + name + "/case.toml";
 }
 
+// The fluid scene of a shipped fluid-only example, with --set-style overrides.
 template <int Dim>
-FluidScene<Dim> tank(const std::vector<std::string>& overrides) {
+FluidScene<Dim> example_scene(const std::string& name, const std::vector<std::string>& overrides) {
   auto keys = fluid_scene_keys();
   const auto r = run_settings_keys();
   keys.insert(keys.end(), r.begin(), r.end());
-  return build_fluid_scene<Dim>(CaseFile::load(example("hydrostatic_2d"), overrides, keys));
+  return build_fluid_scene<Dim>(CaseFile::load(example(name), overrides, keys));
+}
+
+template <int Dim>
+FluidScene<Dim> tank(const std::vector<std::string>& overrides) {
+  return example_scene<Dim>("hydrostatic_2d", overrides);
 }
 
 // A clump of equal spheres (centres in space, radius r, density rho_s); members do not overlap,

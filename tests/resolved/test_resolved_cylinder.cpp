@@ -22,6 +22,7 @@
 #include "case_path.hpp"
 #include "fluid_run.hpp"
 #include "resolved_coupling.hpp"
+#include "resolved_support.hpp"
 #include "unresolved_case.hpp"
 
 namespace isphdem::validation {
@@ -50,22 +51,8 @@ DragResult cylinder_drag() {
   std::printf("D/dx = %.0f, %zu particles, Re = %.2f\n", kDOverDx, solver.particles().size(),
               U * D / scene.config.viscosity);
 
-  DemState dem;
-  DemBody b;
-  b.id = 1;
-  b.x = Vec3{0.1, 0.1, 0.0};
-  b.volume = 4.0 / 3.0 * M_PI * R * R * R;
-  b.mass = 1e9 * b.volume;
-  b.inertia = {0.4 * b.mass * R * R, 0.4 * b.mass * R * R, 0.4 * b.mass * R * R};
-  b.axes = {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};
-  b.members = {1};
-  DemAtom a;
-  a.tag = 1;
-  a.x = b.x;
-  a.radius = R;
-  a.body = 1;
-  dem.atoms.push_back(a);
-  dem.bodies.push_back(b);
+  // The example's sphere, held by inertia as in its in.liggghts (density 1e9 kg/m3).
+  const DemState dem = resolved_test::clump({Vec3{0.1, 0.1, 0.0}}, R, 1e9);
 
   // The stage the example's [coupling] table gives (resolved, lattice PMS, pms_volume =
   // "particles", T = 4R/3 so that V = pi R^2 T and the PMS disc is the cylinder's section).
