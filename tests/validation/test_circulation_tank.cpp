@@ -3,8 +3,8 @@
 // state the upward flux through the window above the forcing zone (where the soil layer will sit)
 // must equal the forced flux v_in * 28 mm within 3%, no particle may leave the tank and no value
 // may become NaN (the solver throws on both, which fails the test with its message). The flux
-// comparison is not met yet (+4%: the column above the zone moves about 5% faster than the
-// zone itself; see docs/fluid.md) and is labelled work_in_progress; stability is validation.
+// read +4.2% while the forcing zone's predictor left out gravity (the column above the zone was
+// projected to v_in + dt g); +0.96% since.
 //
 // CIRCULATION_TANK_END is the simulated time: 0.3 s in the default suite (steady flux is reached
 // within a few hundredths of a second: the fluid is incompressible), the 10 s in the slow
