@@ -119,8 +119,9 @@ std::vector<std::unique_ptr<CouplingStage<Dim>>> make_coupling_stages(const Case
     if (!(dir.norm() > 0))
       throw CaseError(
           "'inflow.direction' must be a non-zero vector (or set gravity for \"upward\")");
-    stages.push_back(std::make_unique<MeanFlowDrive<Dim>>(
-        c.number("inflow.velocity") * dir.normalized(), scene.config.gravity, dt));
+    stages.push_back(
+        std::make_unique<MeanFlowDrive<Dim>>(c.number("inflow.velocity") * dir.normalized(),
+                                             scene.config.gravity, dt, scene.config.density));
   }
   return stages;
 }
