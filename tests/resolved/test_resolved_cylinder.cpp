@@ -7,10 +7,14 @@
 // lattice PMS particles; the slab thickness T = 4R/3 makes the sphere's volume V = pi R^2 T, so
 // the PMS disc has the cylinder's cross-section. C_d = F_x / (T rho U^2 D / 2).
 //
+// The cylinder sits 13 D downstream of the forcing zone's edge: at 8 D (before) the zone, which
+// imposes a uniform stream, acted as an inlet too close and C_d read 6% higher (2.378 against
+// 2.232 at D/dx = 6); 18 D with a 60 D period gave 2.210 (docs/resolved.md).
+//
 // CYLINDER_FULL runs the example as shipped (D/dx = 10, 30 D x 20 D, t U/D = 30) against the
-// issue's 10%: not met (C_d = 2.32, +13.2%), so it is labelled work_in_progress and slow. The
-// default suite runs D/dx = 6 in the same domain (in units of D) to t U/D = 25 and allows 20%
-// at that coarse resolution (measured +16%).
+// issue's 10%: not met (C_d = 2.278, +11.1%), so it is labelled work_in_progress and slow. The
+// default suite runs D/dx = 6 in the same domain (in units of D) to t U/D = 25 and allows 15%
+// at that coarse resolution (measured +8.9%).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -31,7 +35,7 @@ namespace {
 #ifdef CYLINDER_FULL
 constexpr double kDOverDx = 10.0, kEndOverDU = 30.0, kTolerance = 0.10;
 #else
-constexpr double kDOverDx = 6.0, kEndOverDU = 25.0, kTolerance = 0.20;
+constexpr double kDOverDx = 6.0, kEndOverDU = 25.0, kTolerance = 0.15;
 #endif
 constexpr double kCdDennisChang = 2.05;
 
@@ -52,7 +56,7 @@ DragResult cylinder_drag() {
               U * D / scene.config.viscosity);
 
   // The example's sphere, held by inertia as in its in.liggghts (density 1e9 kg/m3).
-  const DemState dem = resolved_test::clump({Vec3{0.1, 0.1, 0.0}}, R, 1e9);
+  const DemState dem = resolved_test::clump({Vec3{0.15, 0.1, 0.0}}, R, 1e9);
 
   // The stage the example's [coupling] table gives (resolved, lattice PMS, pms_volume =
   // "particles", T = 4R/3 so that V = pi R^2 T and the PMS disc is the cylinder's section).
