@@ -12,32 +12,23 @@
 
 #include "drag_law.hpp"
 #include "isph_solver.hpp"
-#include "lattice.hpp"
 #include "mean_flow_drive.hpp"
+#include "periodic_column.hpp"
 #include "unresolved_coupling.hpp"
 
 namespace isphdem {
 namespace {
 
-constexpr double kDx = 1e-3, kWidth = 0.008, kHeight = 0.070, kBedLo = 0.020, kBedHi = 0.050;
+using column::kBedHi;
+using column::kBedLo;
+using column::kDx;
+using column::kHeight;
+using column::kWidth;
 
 TEST(MeanFlowDrive, GrainsOfAFixedBedCarryTheWholeDrive) {
-  const double U = 0.02, rho = 1000.0, nu = 1e-6, dt = 1e-4;
-  isph::Domain<2> domain;
-  domain.lo = {0.0, 0.0};
-  domain.hi = {kWidth, kHeight};
-  domain.periodic = {true, true};
-  isph::Particles<2> P;
-  P.spacing = kDx;
-  P.volume = kDx * kDx;
-  isph::fill_box<2>(P, domain.lo, domain.hi, kDx, isph::kFluid);
-  for (auto& v : P.v) v = {0.0, U};
-  isph::IsphConfig<2> cfg;
-  cfg.density = rho;
-  cfg.viscosity = nu;
-  cfg.free_surface = false;
-  cfg.gravity = {0.0, 0.0};
-  isph::IsphSolver<2> solver(cfg, domain, std::move(P));
+  const double U = 0.02, rho = column::kRho, nu = column::kNu, dt = 1e-4;
+  isph::Vec<2> gravity{0.0, 0.0};
+  auto solver = column::make_solver(U, 0.0);
 
   // Square lattice of 1 mm grains at 1 mm (8 across), slab T such that
   // eps = 1 - (pi/6) d^3 / (s^2 T) = 0.4; their velocities stay zero (a fixed bed).
@@ -55,7 +46,7 @@ TEST(MeanFlowDrive, GrainsOfAFixedBedCarryTheWholeDrive) {
   s.map.smoothing_length = 2.0 * kDx;
   s.map.slab_thickness = T;
   UnresolvedCoupling<2> bed(s, std::make_shared<SeedResistance>(SeedResistanceParameters{}));
-  MeanFlowDrive<2> drive({0.0, U}, cfg.gravity, dt, rho);
+  MeanFlowDrive<2> drive({0.0, U}, gravity, dt, rho);
   bed.initialize(dem, solver);
   drive.initialize(dem, solver);
 

@@ -22,13 +22,21 @@
 #include "fluid_run.hpp"
 #include "isph_solver.hpp"
 #include "lattice.hpp"
+#include "periodic_column.hpp"
 #include "porosity_map.hpp"
 
 namespace isphdem::validation {
 namespace {
 
-constexpr double kDx = 1e-3, kRho = 1000.0, kNu = 1e-6, kG = 9.81;
-constexpr double kBedLo = 0.020, kBedHi = 0.050, kHeight = 0.070, kWidth = 0.008;
+using column::kBedHi;
+using column::kBedLo;
+using column::kDx;
+using column::kHeight;
+using column::kNu;
+using column::kRho;
+using column::kWidth;
+using column::make_solver;
+constexpr double kG = 9.81;
 
 double bed_porosity(double y) {
   // 0.4 inside, 1 outside, tanh edges 2 dx wide: a sharp jump is not what a smoothed grain
@@ -36,24 +44,6 @@ double bed_porosity(double y) {
   const double w = 2 * kDx;
   const double inside = 0.5 * (std::tanh((y - kBedLo) / w) - std::tanh((y - kBedHi) / w));
   return 1.0 - 0.6 * inside;
-}
-
-isph::IsphSolver<2> make_solver(double U, double drive) {
-  isph::Domain<2> domain;
-  domain.lo = {0.0, 0.0};
-  domain.hi = {kWidth, kHeight};
-  domain.periodic = {true, true};
-  isph::Particles<2> P;
-  P.spacing = kDx;
-  P.volume = kDx * kDx;
-  isph::fill_box<2>(P, domain.lo, domain.hi, kDx, isph::kFluid);
-  for (auto& v : P.v) v = {0.0, U};
-  isph::IsphConfig<2> cfg;
-  cfg.density = kRho;
-  cfg.viscosity = kNu;
-  cfg.free_surface = false;
-  cfg.gravity = {0.0, drive};
-  return isph::IsphSolver<2>(cfg, domain, std::move(P));
 }
 
 // The body force that drives Darcy velocity U through the column: mean of K U/eps over the
