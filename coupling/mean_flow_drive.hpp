@@ -60,21 +60,24 @@ class MeanFlowDrive final : public CouplingStage<Dim> {
   void after_fluid_step(const DemState& dem, const isph::IsphSolver<Dim>&, double,
                         DemLoads& loads) override {
     for (std::size_t k = 0; k < loads.atom_tags.size(); ++k) {
-      const DemAtom* a = find_atom(dem, loads.atom_tags[k]);
+      const DemAtom* a = find_row(dem.atoms, loads.atom_tags[k], &DemAtom::tag);
       if (a) add_drive(4.0 / 3.0 * M_PI * a->radius * a->radius * a->radius, loads.atom_force[k]);
     }
-    for (std::size_t k = 0; k < loads.body_ids.size(); ++k)
-      for (const auto& b : dem.bodies)
-        if (b.id == loads.body_ids[k]) add_drive(b.volume, loads.body_force[k]);
+    for (std::size_t k = 0; k < loads.body_ids.size(); ++k) {
+      const DemBody* b = find_row(dem.bodies, loads.body_ids[k], &DemBody::id);
+      if (b) add_drive(b->volume, loads.body_force[k]);
+    }
   }
 
   const isph::Vec<Dim>& drive() const { return drive_; }
 
  private:
-  static const DemAtom* find_atom(const DemState& dem, int tag) {  // atoms are sorted by tag
-    auto it = std::lower_bound(dem.atoms.begin(), dem.atoms.end(), tag,
-                               [](const DemAtom& a, int t) { return a.tag < t; });
-    return it != dem.atoms.end() && it->tag == tag ? &*it : nullptr;
+  // DemState rows are sorted by atom tag and by body id.
+  template <class Row>
+  static const Row* find_row(const std::vector<Row>& rows, int key, int Row::*field) {
+    auto it = std::lower_bound(rows.begin(), rows.end(), key,
+                               [field](const Row& r, int k) { return r.*field < k; });
+    return it != rows.end() && (*it).*field == key ? &*it : nullptr;
   }
   void add_drive(double volume, Vec3& force) const {
     for (int a = 0; a < Dim; ++a) force[a] += density_ * drive_[a] * volume;

@@ -26,7 +26,7 @@ using column::kHeight;
 using column::kWidth;
 
 TEST(MeanFlowDrive, GrainsOfAFixedBedCarryTheWholeDrive) {
-  const double U = 0.02, rho = column::kRho, nu = column::kNu, dt = 1e-4;
+  const double U = 0.02, rho = column::kRho, dt = 1e-4;
   isph::Vec<2> gravity{0.0, 0.0};
   auto solver = column::make_solver(U, 0.0);
 
@@ -81,9 +81,8 @@ TEST(MeanFlowDrive, GrainsOfAFixedBedCarryTheWholeDrive) {
   // Ergun's seepage force on a sharp bed, rho g i L W T, for scale only: the mapped porosity has
   // smoothed edges (2 dx) whose resistance is less than the step's (-7% here); the core gradient
   // is checked against Ergun in test_porous_bed.
-  const double a_star = 150 * nu * (1 - n) * (1 - n) / (n * n * n * d * d),
-               b_star = 1.75 * (1 - n) / (n * n * n * d);
-  const double ergun = rho * (a_star * U + b_star * U * U) * L * kWidth * T;
+  const SeedResistance law{SeedResistanceParameters{}};
+  const double ergun = rho * (law.a_star(n) * U + law.b_star(n) * U * U) * L * kWidth * T;
   std::printf(
       "sum of grain loads %.4e N = %.4f x rho g_d H W T (%.4f without the drive's share, "
       "1 - (1 - n) L / H = %.4f); Ergun's seepage force %.4e N: error %+.2f%%\n",
