@@ -345,7 +345,7 @@ void IsphSolver<Dim>::compute_pressure_rhs(double dt) {
     rhs_[i] = rho0 / dt * divergence(nb_, op_, u_star_, i) +
               config_.alpha_s * rho0 * density_error / (dt * dt);
   }
-  if (porous_.active()) PorousMedium<Dim>::remove_net_source(P, rhs_);
+  remove_net_source(P, rhs_);
 }
 
 template <int Dim>

@@ -57,22 +57,6 @@ Vec<Dim> PorousMedium<Dim>::predict(const Particles<Dim>& P, int i, double dt, d
   return explicit_part / (1.0 + dt * k);
 }
 
-template <int Dim>
-void PorousMedium<Dim>::remove_net_source(const Particles<Dim>& P, std::vector<double>& rhs) {
-  double sum = 0.0;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    if (P.kind[i] == kWall) continue;
-    if (P.surface[i]) return;  // a Dirichlet row sets the level: nothing to remove
-    sum += rhs[i];
-    ++n;
-  }
-  if (n == 0) return;
-  const double mean = sum / static_cast<double>(n);
-  for (std::size_t i = 0; i < P.size(); ++i)
-    if (P.kind[i] != kWall) rhs[i] -= mean;
-}
-
 template class PorousMedium<2>;
 template class PorousMedium<3>;
 

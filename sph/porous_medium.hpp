@@ -43,13 +43,6 @@ class PorousMedium {
   const std::vector<double>& pressure_coefficient() const { return coefficient_; }
   double pressure_coefficient(int i) const { return coefficient_[i]; }
 
-  // Without a Dirichlet row (closed or periodic boxes) the pressure equation is solvable only
-  // when its right-hand side has no net source; otherwise the pinned row absorbs the excess
-  // (density-invariance and divergence errors do not sum to zero), and a driven periodic column
-  // grew a vortex around the pinned particle within 0.3 s. Removes the mean over fluid-like
-  // rows. Called only while porous terms act, so clear-fluid results stay bit-identical.
-  static void remove_net_source(const Particles<Dim>& P, std::vector<double>& rhs);
-
   // u* of a fluid particle from its Laplacian of velocity, eddy viscosity and body acceleration.
   Vec<Dim> predict(const Particles<Dim>& P, int i, double dt, double nu, double nu_t,
                    const Vec<Dim>& laplacian_v, const Vec<Dim>& g) const;

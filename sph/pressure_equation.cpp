@@ -6,6 +6,22 @@
 namespace isph {
 
 template <int Dim>
+void remove_net_source(const Particles<Dim>& particles, std::vector<double>& rhs) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    if (particles.kind[i] == kWall) continue;
+    if (particles.surface[i]) return;  // a Dirichlet row sets the level: nothing to remove
+    sum += rhs[i];
+    ++n;
+  }
+  if (n == 0) return;
+  const double mean = sum / static_cast<double>(n);
+  for (std::size_t i = 0; i < particles.size(); ++i)
+    if (particles.kind[i] != kWall) rhs[i] -= mean;
+}
+
+template <int Dim>
 void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
                        const Operators<Dim>& op, const std::vector<double>& rhs,
                        const Vec<Dim>& gravity, double rho0, double h, PressureSystem<Dim>& out,
@@ -112,6 +128,8 @@ void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb
   }
 }
 
+template void remove_net_source<2>(const Particles<2>&, std::vector<double>&);
+template void remove_net_source<3>(const Particles<3>&, std::vector<double>&);
 template void assemble_pressure<2>(const Particles<2>&, const Neighbors<2>&, const Operators<2>&,
                                    const std::vector<double>&, const Vec<2>&, double, double,
                                    PressureSystem<2>&, const std::vector<double>*);
