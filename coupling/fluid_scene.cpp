@@ -34,6 +34,7 @@ std::vector<std::string> fluid_scene_keys() {
           "solver.alpha_s",
           "solver.min_wall_distance",
           "solver.free_surface",
+          "solver.spread_pin",
           "solver.surface_threshold",
           "solver.shifting",
           "solver.shifting_coefficient",
@@ -236,6 +237,7 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
   cfg.alpha_s = c.number("solver.alpha_s", cfg.alpha_s);
   cfg.min_wall_distance = c.number("solver.min_wall_distance", cfg.min_wall_distance);
   cfg.free_surface = c.boolean("solver.free_surface", cfg.free_surface);
+  cfg.spread_pin = c.boolean("solver.spread_pin", cfg.spread_pin);
   cfg.surface.density_ratio = c.number("solver.surface_threshold", cfg.surface.density_ratio);
   if (cfg.surface.density_ratio <= 0 || cfg.surface.density_ratio >= 1)
     throw CaseError("'solver.surface_threshold' must lie between 0 and 1 (a number-density ratio)");

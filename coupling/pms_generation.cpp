@@ -1,8 +1,10 @@
 #include "pms_generation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -19,6 +21,11 @@ struct Sphere {
 };
 
 std::string num(double v) { return isph::format_number(v); }
+
+// A node this far (in spacings) outside every member still counts as inside the grain's filled
+// outline: it closes the interstices of touching dx-wide spheres (0.077 dx outside the nearest
+// in a hexagonal packing) without growing the outline by more than a small rim.
+constexpr double kOutlineSlack = 0.15;
 
 template <int Dim>
 isph::Vec<Dim> in_plane(const Vec3& a) {
@@ -49,8 +56,9 @@ PmsShape pms_shape_from_name(const std::string& name) {
   if (name == "auto") return PmsShape::Auto;
   if (name == "lattice") return PmsShape::Lattice;
   if (name == "per_sphere") return PmsShape::PerSphere;
+  if (name == "outline") return PmsShape::Outline;
   throw std::invalid_argument("unknown PMS shape '" + name +
-                              "': use \"auto\", \"lattice\" or \"per_sphere\"");
+                              "': use \"auto\", \"lattice\", \"outline\" or \"per_sphere\"");
 }
 
 template <int Dim>
@@ -97,7 +105,7 @@ std::vector<isph::Vec<Dim>> generate_pms_particles(const DemBody& body,
                                 "particletemplate/multisphere ... use_volume)");
   const double target = body.volume / pms_volume<Dim>(1, settings);
   const std::size_t n = static_cast<std::size_t>(std::llround(target));
-  if (n < 1)
+  if (n < 1 && shape != PmsShape::Outline)
     throw std::invalid_argument(
         who + " (volume " + num(body.volume) + " m^3) holds " + num(target) +
         " particles at spacing " + num(dx) +
@@ -142,6 +150,17 @@ std::vector<isph::Vec<Dim>> generate_pms_particles(const DemBody& body,
   }
   std::sort(nodes.begin(), nodes.end(),
             [](const Node& a, const Node& b) { return a.depth > b.depth; });
+
+  if (shape == PmsShape::Outline) {
+    std::vector<V> out;
+    for (const auto& node : nodes)
+      if (node.depth >= -kOutlineSlack * dx) out.push_back(node.x);
+    if (out.empty())
+      throw std::invalid_argument(who +
+                                  ": no lattice node lies inside its spheres; refine "
+                                  "particles.spacing or use coupling.pms_shape = \"lattice\"");
+    return out;
+  }
 
   // The nodes clearly inside the level set that holds n nodes are kept; the rest are chosen
   // among the nodes within a band of +-0.35 dx around it (the lattice makes that boundary ragged
@@ -202,6 +221,87 @@ std::vector<isph::Vec<Dim>> generate_pms_particles(const DemBody& body,
   return out;
 }
 
+template <int Dim>
+std::size_t remove_shared_pms_nodes(std::vector<std::vector<isph::Vec<Dim>>>& particles,
+                                    const std::vector<DemBody>& bodies,
+                                    const std::vector<std::vector<DemAtom>>& members,
+                                    const isph::Domain<Dim>& domain, double spacing) {
+  using V = isph::Vec<Dim>;
+  struct Ref {
+    std::size_t body, k;
+  };
+  // Cells of half a spacing: a close pair lies in the same or a neighbouring cell.
+  const double cell = 0.5 * spacing;
+  auto key = [&](const V& x) {
+    std::array<long, 3> c{0, 0, 0};
+    for (int a = 0; a < Dim; ++a)
+      c[a] = static_cast<long>(std::floor((x[a] - domain.lo[a]) / cell));
+    return c;
+  };
+  std::map<std::array<long, 3>, std::vector<Ref>> grid;
+  for (std::size_t b = 0; b < particles.size(); ++b)
+    for (std::size_t k = 0; k < particles[b].size(); ++k)
+      grid[key(particles[b][k])].push_back({b, k});
+  auto depth = [&](std::size_t b, const V& x) {
+    const auto spheres = member_sections<Dim>(bodies[b], members[b]);
+    double d = -std::numeric_limits<double>::max();
+    for (const auto& s : spheres)
+      d = std::max(d, s.r - domain.min_image(x - in_plane<Dim>(s.c)).norm());
+    return d;
+  };
+  std::vector<std::vector<uint8_t>> drop(particles.size());
+  std::vector<std::size_t> left(particles.size());
+  for (std::size_t b = 0; b < particles.size(); ++b) {
+    drop[b].assign(particles[b].size(), 0);
+    left[b] = particles[b].size();
+  }
+  const double limit2 = cell * cell;
+  std::size_t removed = 0;
+  for (const auto& [c, refs] : grid) {
+    for (const Ref& r : refs) {
+      if (drop[r.body][r.k]) continue;
+      const V& x = particles[r.body][r.k];
+      std::array<long, 3> n = c;
+      const long span = Dim == 3 ? 1 : 0;
+      for (long i = -1; i <= 1; ++i)
+        for (long j = -1; j <= 1; ++j)
+          for (long l = -span; l <= span; ++l) {
+            n = {c[0] + i, c[1] + j, c[2] + l};
+            const auto it = grid.find(n);
+            if (it == grid.end()) continue;
+            for (const Ref& o : it->second) {
+              if (o.body == r.body || drop[o.body][o.k] || drop[r.body][r.k]) continue;
+              const V& y = particles[o.body][o.k];
+              if (domain.min_image(x - y).squaredNorm() >= limit2) continue;
+              // Keep the deeper one, unless that would empty the other body.
+              bool drop_r = depth(r.body, x) < depth(o.body, y);
+              if (drop_r && left[r.body] == 1) drop_r = false;
+              if (!drop_r && left[o.body] == 1) continue;
+              const Ref& gone = drop_r ? r : o;
+              drop[gone.body][gone.k] = 1;
+              --left[gone.body];
+              ++removed;
+            }
+          }
+    }
+  }
+  for (std::size_t b = 0; b < particles.size(); ++b) {
+    std::vector<V> kept;
+    for (std::size_t k = 0; k < particles[b].size(); ++k)
+      if (!drop[b][k]) kept.push_back(particles[b][k]);
+    particles[b] = std::move(kept);
+  }
+  return removed;
+}
+
+template std::size_t remove_shared_pms_nodes<2>(std::vector<std::vector<isph::Vec<2>>>&,
+                                                const std::vector<DemBody>&,
+                                                const std::vector<std::vector<DemAtom>>&,
+                                                const isph::Domain<2>&, double);
+template std::size_t remove_shared_pms_nodes<3>(std::vector<std::vector<isph::Vec<3>>>&,
+                                                const std::vector<DemBody>&,
+                                                const std::vector<std::vector<DemAtom>>&,
+                                                const isph::Domain<3>&, double);
 template double pms_volume<2>(std::size_t, const PmsGenerationSettings&);
 template double pms_volume<3>(std::size_t, const PmsGenerationSettings&);
 template std::vector<isph::Vec<2>> generate_pms_particles<2>(const DemBody&,

@@ -21,6 +21,14 @@
 // member at the sphere's centre instead: a lattice cannot resolve them, and one particle per
 // sphere keeps the clump's shape. Their solid volume is N dx^Dim (x T), which differs from V;
 // ResolvedCoupling reports the ratio.
+//
+// Outline: every lattice node inside the members (or within 0.15 dx of one, which closes the
+// interstices of touching dx-wide spheres). For the seed's coarse grains (19 touching 1 mm
+// spheres, dx = 1 mm, T = 1 mm) that is 16-21 particles where the DEM volume asks for 10: about
+// the seed's one per sphere, but on the lattice. The volume-matched lattice leaves a clear rim
+// inside the grain's outline, and between two touching grains a channel one or two spacings
+// wide that the DEM says is closed; pore jets ran away there (examples/internal_erosion_2d).
+// With coupling.pms_volume = "dem" the loads are still those of the DEM volume.
 #ifndef ISPHDEM_PMS_GENERATION_HPP
 #define ISPHDEM_PMS_GENERATION_HPP
 
@@ -28,6 +36,7 @@
 #include <vector>
 
 #include "dem_state.hpp"
+#include "domain.hpp"
 #include "vec.hpp"
 
 namespace isphdem {
@@ -36,6 +45,7 @@ enum class PmsShape {
   Auto,       // per_sphere when every member is at most 1.5 dx wide, else lattice
   Lattice,    // volume-matched lattice nodes inside the members
   PerSphere,  // one particle at each member's centre
+  Outline,    // every lattice node inside the members' outline (as many as per-sphere gives)
 };
 
 PmsShape pms_shape_from_name(const std::string& name);
@@ -54,6 +64,19 @@ std::vector<isph::Vec<Dim>> generate_pms_particles(const DemBody& body,
                                                    const std::vector<DemAtom>& members,
                                                    const PmsGenerationSettings& settings,
                                                    const isph::Vec<Dim>& origin);
+
+// Two clumps in contact generate their particles independently, so on a lattice both may take the
+// node at their contact (in examples/internal_erosion_2d, two solid particles at distance 0):
+// a doubled particle the fitted operators and the pressure rows cannot resolve, where the first
+// pore jets of the semi-resolved runs started. Of every pair of particles of different bodies
+// closer than half a spacing, the one less deep inside its own member spheres is removed (never
+// a body's last particle). `particles[b]` are body b's positions from generate_pms_particles.
+// Returns how many were removed.
+template <int Dim>
+std::size_t remove_shared_pms_nodes(std::vector<std::vector<isph::Vec<Dim>>>& particles,
+                                    const std::vector<DemBody>& bodies,
+                                    const std::vector<std::vector<DemAtom>>& members,
+                                    const isph::Domain<Dim>& domain, double spacing);
 
 // The solid volume the fluid sees for n PMS particles: n dx^3, or n dx^2 T in 2D.
 template <int Dim>

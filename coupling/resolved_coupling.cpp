@@ -96,8 +96,11 @@ void ResolvedCoupling<Dim>::initialize(const DemState& dem, isph::IsphSolver<Dim
   PmsGenerationSettings gen{dx, settings_.slab_thickness, settings_.shape};
   const auto& domain = solver.domain();
 
-  for (const DemBody& body : dem.bodies) {
-    std::vector<DemAtom> members;
+  std::vector<std::vector<DemAtom>> members_of(dem.bodies.size());
+  std::vector<std::vector<isph::Vec<Dim>>> positions(dem.bodies.size());
+  for (std::size_t bi = 0; bi < dem.bodies.size(); ++bi) {
+    const DemBody& body = dem.bodies[bi];
+    std::vector<DemAtom>& members = members_of[bi];
     for (int tag : body.members) {
       const auto it = atom_by_tag.find(tag);
       if (it == atom_by_tag.end())
@@ -118,7 +121,19 @@ void ResolvedCoupling<Dim>::initialize(const DemState& dem, isph::IsphSolver<Dim
         origin = P.x[i];
       }
     }
-    std::vector<isph::Vec<Dim>> x = generate_pms_particles<Dim>(body, members, gen, origin);
+    positions[bi] = generate_pms_particles<Dim>(body, members, gen, origin);
+  }
+  shared_removed_ = remove_shared_pms_nodes<Dim>(positions, dem.bodies, members_of, domain, dx);
+  if (shared_removed_ > 0)
+    std::printf(
+        "resolved coupling: %zu PMS particles dropped where touching bodies took the same "
+        "lattice node\n",
+        shared_removed_);
+
+  for (std::size_t bi = 0; bi < dem.bodies.size(); ++bi) {
+    const DemBody& body = dem.bodies[bi];
+    const std::vector<isph::Vec<Dim>>& x = positions[bi];
+    const isph::Vec<Dim> cm = in_plane<Dim>(body.x);
     for (const auto& xi : x)
       if (!domain.contains(xi))
         throw std::invalid_argument("resolved coupling: multisphere body " +

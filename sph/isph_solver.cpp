@@ -15,6 +15,17 @@ namespace isph {
 
 namespace {
 
+// q of spread_pinned_source only has to carry the pinned row's excess to the other rows: an
+// error of 1e-4 in q leaves 1e-4 of that excess where it was. In the semi-resolved erosion tank
+// this costs 200 BiCGSTAB iterations per step for both solves, against 340 at the pressure's
+// own 1e-8 and 170 for the pressure alone.
+constexpr double kUnitResponseTolerance = 1e-4;
+
+LinearSolverConfig unit_solver_config(LinearSolverConfig c) {
+  c.tolerance = std::max(c.tolerance, kUnitResponseTolerance);
+  return c;
+}
+
 std::string fmt(double v) { return format_number(v, 4); }
 
 template <int Dim>
@@ -40,7 +51,8 @@ IsphSolver<Dim>::IsphSolver(const IsphConfig<Dim>& config, const Domain<Dim>& do
       particles_(std::move(particles)),
       kernel_(config.kernel, config.smoothing_ratio * particles_.spacing),
       search_(domain, kernel_.support()),
-      linear_solver_(make_linear_solver(config.pressure_solver)) {
+      linear_solver_(make_linear_solver(config.pressure_solver)),
+      unit_solver_(make_linear_solver(unit_solver_config(config.pressure_solver))) {
   if (!(particles_.spacing > 0.0))
     throw SimulationError("particle spacing must be positive (particles.spacing)");
   if (particles_.size() == 0) throw SimulationError("the case creates no particles");
@@ -92,7 +104,12 @@ template <int Dim>
 void IsphSolver<Dim>::update_geometry() {
   {
     Stopwatch w(timings_.neighbors);
-    search_.sort(particles_);
+    const std::vector<int> perm = search_.sort(particles_);
+    if (unit_response_.size() == static_cast<Eigen::Index>(perm.size())) {
+      Eigen::VectorXd q(unit_response_.size());
+      for (std::size_t k = 0; k < perm.size(); ++k) q[k] = unit_response_[perm[k]];
+      unit_response_.swap(q);
+    }
     search_.build(particles_, kernel_, nb_);
   }
   Stopwatch w(timings_.operators);
@@ -362,6 +379,14 @@ void IsphSolver<Dim>::solve_pressure(StepStats& stats) {
   const SolveStats s = linear_solver_->solve(system_.A, system_.b, pressure_, p_scale);
   stats.ppe_iterations = s.iterations;
   stats.ppe_residual = s.residual;
+  if (config_.spread_pin && system_.pinned >= 0 && std::isfinite(s.residual)) {
+    const Eigen::VectorXd e = uniform_source(P, op_, system_);
+    if (unit_response_.size() != n) unit_response_ = Eigen::VectorXd::Zero(n);
+    const SolveStats u = unit_solver_->solve(system_.A, e, unit_response_);
+    stats.ppe_iterations += u.iterations;
+    if (std::isfinite(u.residual) && u.residual <= 1e3 * kUnitResponseTolerance)
+      spread_pinned_source(system_, unit_response_, pressure_);
+  }
   if (!std::isfinite(s.residual) || s.residual > 1e3 * config_.pressure_solver.tolerance)
     throw SimulationError("pressure solver failed at t = " + fmt(time_) + " s (relative residual " +
                           fmt(s.residual) + " after " + std::to_string(s.iterations) +

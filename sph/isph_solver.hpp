@@ -62,6 +62,9 @@ struct IsphConfig {
   // Poiseuille rows jittering by 0.2 dx at the viscous dt; 0.001 keeps the L2 error at 0.2%.
   double alpha_s = 0.001;
   bool free_surface = true;
+  // Closed or periodic boxes: spread what the pinned pressure row would absorb over all rows
+  // (spread_pinned_source, sph/pressure_equation.hpp); costs a second solve per step.
+  bool spread_pin = true;
   SurfaceCriteria surface;
   // Smagorinsky eddy viscosity nu_T = (C_s dx)^2 sqrt(2 S:S), added to nu in the viscous term.
   bool smagorinsky = false;
@@ -148,6 +151,7 @@ class IsphSolver {
   Kernel<Dim> kernel_;
   NeighborSearch<Dim> search_;
   std::unique_ptr<LinearSolver> linear_solver_;
+  std::unique_ptr<LinearSolver> unit_solver_;  // for spread_pinned_source's q, looser tolerance
   double n0_ = 0.0;
   double time_ = 0.0;
   long steps_ = 0;
@@ -163,6 +167,7 @@ class IsphSolver {
   std::vector<Vec<Dim>> u_star_, wall_ghost_, shift_;
   std::vector<uint8_t> operator_mode_, full_support_, shift_mode_, dry_wall_;
   Eigen::VectorXd pressure_;
+  Eigen::VectorXd unit_response_;  // q of spread_pinned_source, the warm start of the next step
 };
 
 }  // namespace isph

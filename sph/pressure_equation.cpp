@@ -1,6 +1,7 @@
 #include "pressure_equation.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace isph {
@@ -81,6 +82,22 @@ void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb
     };
 
     const bool wall = particles.kind[i] == kWall;
+    if (i == out.pinned) {
+      // Keep the interior equation the pin replaces (spread_pinned_source).
+      out.pin_row.clear();
+      double d = 0.0;
+      for (int k = b; k < e; ++k) {
+        double lap = op.lap[k];
+        if (coefficient) {
+          const double cj = (*coefficient)[nb.index[k]], ci = (*coefficient)[i];
+          lap *= 2.0 * ci * cj / (ci + cj);
+        }
+        d -= lap;
+        out.pin_row.emplace_back(nb.index[k], lap * scale);
+      }
+      out.pin_row.emplace_back(i, d * scale);
+      out.pin_b = rhs[i] * scale;
+    }
     const bool dirichlet = (!wall && particles.surface[i]) || i == out.pinned;
     if (dirichlet || (op.order[i] == 0 && !wall)) {
       const int d = put_neighbors([](int) { return 0.0; });
@@ -128,6 +145,42 @@ void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb
   }
 }
 
+template <int Dim>
+double spread_pinned_source(const PressureSystem<Dim>& system, const Eigen::VectorXd& q,
+                            Eigen::VectorXd& p) {
+  if (system.pinned < 0 || system.pin_row.empty()) return 0.0;
+  double r = system.pin_b, s = 1.0;
+  for (const auto& [j, c] : system.pin_row) {
+    r -= c * p[j];
+    s -= c * q[j];
+  }
+  if (!(std::abs(s) > 1e-300)) return 0.0;
+  const double lambda = r / s;
+  p -= lambda * q;
+  return lambda;
+}
+
+template <int Dim>
+Eigen::VectorXd uniform_source(const Particles<Dim>& particles, const Operators<Dim>& op,
+                               const PressureSystem<Dim>& system) {
+  const int n = static_cast<int>(particles.size());
+  Eigen::VectorXd e(n);
+  for (int i = 0; i < n; ++i)
+    e[i] = (particles.kind[i] == kWall || i == system.pinned || particles.surface[i] ||
+            op.order[i] == 0)
+               ? 0.0
+               : 1.0;
+  return e;
+}
+
+template double spread_pinned_source<2>(const PressureSystem<2>&, const Eigen::VectorXd&,
+                                        Eigen::VectorXd&);
+template double spread_pinned_source<3>(const PressureSystem<3>&, const Eigen::VectorXd&,
+                                        Eigen::VectorXd&);
+template Eigen::VectorXd uniform_source<2>(const Particles<2>&, const Operators<2>&,
+                                           const PressureSystem<2>&);
+template Eigen::VectorXd uniform_source<3>(const Particles<3>&, const Operators<3>&,
+                                           const PressureSystem<3>&);
 template void remove_net_source<2>(const Particles<2>&, std::vector<double>&);
 template void remove_net_source<3>(const Particles<3>&, std::vector<double>&);
 template void assemble_pressure<2>(const Particles<2>&, const Neighbors<2>&, const Operators<2>&,

@@ -11,6 +11,7 @@
 //    div(c grad p) = rhs, each Laplacian pair weight scaled by the harmonic mean of c_i and c_j;
 //  - with no Dirichlet row at all (closed or periodic box), one fluid row is pinned to p = 0 to
 //    remove the constant null space.
+#include <utility>
 #include <vector>
 
 #include "linear_solver.hpp"
@@ -24,7 +25,31 @@ struct PressureSystem {
   SparseMatrix A;
   Eigen::VectorXd b;
   int pinned = -1;  // index of the pinned row, -1 when a Dirichlet row fixes the level
+  // The interior equation the pin replaced (scaled like the other rows): its coefficients by
+  // column, diagonal included, and its right-hand side. spread_pinned_source() uses them.
+  std::vector<std::pair<int, double>> pin_row;
+  double pin_b = 0.0;
 };
+
+// The pinned row p_k = 0 absorbs whatever part of the source the singular equation cannot
+// satisfy: the component along its left null vector y (y^T b), which is not the mean unless the
+// Laplacian is symmetric. With the fitted Laplacian around PMS bodies it is large: in the closed
+// internal-erosion tank the pinned corner became a point sink with jets of 4 v_in at 0.01 s,
+// matched by volume created in the bed's pores. Given the solution p of the pinned system and q
+// of the same system with a unit source in every fluid-like row but the pinned one (walls and
+// the pin: 0), this returns p - lambda q, which satisfies every interior equation, the pinned
+// one included, with the source lowered by the same lambda everywhere: the excess is spread
+// over all particles as a uniform compression the density-invariance term then corrects, not
+// put into one. Returns lambda (in units of the scaled right-hand side).
+template <int Dim>
+double spread_pinned_source(const PressureSystem<Dim>& system, const Eigen::VectorXd& q,
+                            Eigen::VectorXd& p);
+
+// The right-hand side of that second solve: 1 in the interior rows, 0 in wall rows, the pin and
+// the rows of isolated particles (p = 0).
+template <int Dim>
+Eigen::VectorXd uniform_source(const Particles<Dim>& particles, const Operators<Dim>& op,
+                               const PressureSystem<Dim>& system);
 
 // Without a Dirichlet row (closed or periodic boxes) the pressure equation is solvable only when
 // its right-hand side has no net source; otherwise the pinned row absorbs the excess (density-
