@@ -27,8 +27,10 @@
 // spheres, dx = 1 mm, T = 1 mm) that is 16-21 particles where the DEM volume asks for 10: about
 // the seed's one per sphere, but on the lattice. The volume-matched lattice leaves a clear rim
 // inside the grain's outline, and between two touching grains a channel one or two spacings
-// wide that the DEM says is closed; pore jets ran away there (examples/internal_erosion_2d).
-// With coupling.pms_volume = "dem" the loads are still those of the DEM volume.
+// wide that the DEM says is closed; pore jets ran away there at 2 cm/s
+// (examples/internal_erosion_2d). With coupling.pms_volume = "dem" the loads are still those of
+// the DEM volume, but the pores are narrower than the slab's solid fraction says
+// (docs/resolved.md).
 #ifndef ISPHDEM_PMS_GENERATION_HPP
 #define ISPHDEM_PMS_GENERATION_HPP
 

@@ -167,7 +167,8 @@ class IsphSolver {
   std::vector<Vec<Dim>> u_star_, wall_ghost_, shift_;
   std::vector<uint8_t> operator_mode_, full_support_, shift_mode_, dry_wall_;
   Eigen::VectorXd pressure_;
-  Eigen::VectorXd unit_response_;  // q of spread_pinned_source, the warm start of the next step
+  Eigen::VectorXd unit_response_;   // q of spread_pinned_source, reused for a few steps
+  int64_t unit_response_pin_ = -1;  // id of the particle pinned when q was solved
 };
 
 }  // namespace isph

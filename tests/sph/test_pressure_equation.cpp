@@ -19,22 +19,41 @@ double exact_lap(const Vec<2>& x) {
   return (-M_PI * M_PI + 0.25) * std::sin(M_PI * x[0]) * std::cosh(0.5 * x[1]);
 }
 
-double manufactured_error(double dx) {
+// The unit square of fluid particles, each moved by up to `jitter` spacings; neighbours and
+// fitted operators built.
+struct DisorderedBox {
   Particles<2> p;
-  p.spacing = dx;
-  p.volume = dx * dx;
-  fill_box<2>(p, Vec<2>::Zero(), Vec<2>::Ones(), dx, kFluid);
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> u(-0.2 * dx, 0.2 * dx);
-  for (auto& x : p.x) x += Vec<2>(u(rng), u(rng));
-  Kernel<2> W(KernelType::WendlandC2, 1.3 * dx);
-  Domain<2> dom;
-  NeighborSearch<2> search(dom, W.support());
-  search.sort(p);
+  Kernel<2> W;
   Neighbors<2> nb;
-  search.build(p, W, nb);
   Operators<2> op;
-  compute_operators(nb, W.h(), p.volume, {}, op);
+  DisorderedBox(double dx, double jitter, unsigned seed, bool periodic)
+      : W(KernelType::WendlandC2, 1.3 * dx) {
+    p.spacing = dx;
+    p.volume = dx * dx;
+    fill_box<2>(p, Vec<2>::Zero(), Vec<2>::Ones(), dx, kFluid);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-jitter * dx, jitter * dx);
+    for (auto& x : p.x) x += Vec<2>(u(rng), u(rng));
+    Domain<2> dom;
+    if (periodic) {
+      dom.lo = Vec<2>::Zero();
+      dom.hi = Vec<2>::Ones();
+      dom.periodic = {true, true};
+      for (auto& x : p.x) dom.wrap(x);
+    }
+    NeighborSearch<2> search(dom, W.support());
+    search.sort(p);
+    search.build(p, W, nb);
+    compute_operators(nb, W.h(), p.volume, {}, op);
+  }
+};
+
+double manufactured_error(double dx) {
+  DisorderedBox box(dx, 0.2, 5, false);
+  auto& p = box.p;
+  const auto& W = box.W;
+  const auto& nb = box.nb;
+  const auto& op = box.op;
   const int n = static_cast<int>(p.size());
   std::vector<double> rhs(n);
   for (int i = 0; i < n; ++i) {
@@ -121,28 +140,14 @@ TEST(PressureEquation, WallRowsGiveExactHydrostatics) {
 // alone absorbs (a point source in a real run). spread_pinned_source must turn that into the
 // same shift lambda of every row's source, the pinned row's own equation included.
 TEST(PressureEquation, PinnedRowExcessIsSpreadUniformly) {
-  const double dx = 0.05;
-  Particles<2> p;
-  p.spacing = dx;
-  p.volume = dx * dx;
-  fill_box<2>(p, Vec<2>::Zero(), Vec<2>::Ones(), dx, kFluid);
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> u(-0.25 * dx, 0.25 * dx);
-  for (auto& x : p.x) x += Vec<2>(u(rng), u(rng));
-  Kernel<2> W(KernelType::WendlandC2, 1.3 * dx);
-  Domain<2> dom;
-  dom.lo = Vec<2>::Zero();
-  dom.hi = Vec<2>::Ones();
-  dom.periodic = {true, true};
-  for (auto& x : p.x) dom.wrap(x);
-  NeighborSearch<2> search(dom, W.support());
-  search.sort(p);
-  Neighbors<2> nb;
-  search.build(p, W, nb);
-  Operators<2> op;
-  compute_operators(nb, W.h(), p.volume, {}, op);
+  DisorderedBox box(0.05, 0.25, 11, true);
+  const auto& p = box.p;
+  const auto& W = box.W;
+  const auto& nb = box.nb;
+  const auto& op = box.op;
   const int n = static_cast<int>(p.size());
   std::vector<double> rhs(n);
+  std::mt19937 rng(12);
   std::normal_distribution<double> g(0.0, 1.0);
   for (auto& r : rhs) r = g(rng);
   remove_net_source(p, rhs);
