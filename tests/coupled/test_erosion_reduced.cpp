@@ -38,6 +38,11 @@ std::map<std::string, std::vector<double>> read_diagnostics(const std::filesyste
 
 double peak(const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); }
 
+double median(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
 TEST(ErosionReduced, SemiResolvedPoreJetsOutrunUnresolvedAndUnresolvedLayerStays) {
   const std::string dir = std::string(ISPHDEM_SOURCE_DIR) + "/examples/internal_erosion_2d";
   const std::string pack = std::string(ISPHDEM_BINARY_DIR) + "/coupling/isphdem dem " + dir +
@@ -61,20 +66,24 @@ TEST(ErosionReduced, SemiResolvedPoreJetsOutrunUnresolvedAndUnresolvedLayerStays
   auto& semi = d["semi-resolved"];
   const double un_peak = peak(un["max_pore_speed_ratio"]);
   const double semi_peak = peak(semi["max_pore_speed_ratio"]);
+  // The per-row peak is spiky (single particles); its median over the run is the steady level.
+  const double un_median = median(un["max_pore_speed_ratio"]);
+  const double semi_median = median(semi["max_pore_speed_ratio"]);
   std::printf(
       "1 s at v_in = 0.5 cm/s, reduced tank:\n"
       "  model          peak pore speed/v_in  fines above surface  surface [mm]  skeleton moved "
       "[mm]\n"
       "  unresolved     %8.1f              %5.0f                %.2f -> %.2f   %.4f\n"
       "  semi-resolved  %8.1f              %5.0f                %.2f -> %.2f   %.4f\n"
-      "  ratio of peak pore speeds: %.1f\n",
+      "  ratio of peak pore speeds: %.1f; of their medians over the rows: %.1f / %.1f = %.1f\n",
       un_peak, un["fines_above_surface"].back(), 1e3 * un["surface_height"].front(),
       1e3 * un["surface_height"].back(), 1e3 * un["skeleton_displacement"].back(), semi_peak,
       semi["fines_above_surface"].back(), 1e3 * semi["surface_height"].front(),
       1e3 * semi["surface_height"].back(), 1e3 * semi["skeleton_displacement"].back(),
-      semi_peak / un_peak);
+      semi_peak / un_peak, semi_median, un_median, semi_median / un_median);
   // The contrast the seed reports: several times faster pore water between coarse grains.
   EXPECT_GT(semi_peak, 3.0 * un_peak);
+  EXPECT_GT(semi_median, 2.5 * un_median);
   // The unresolved layer at 0.5 cm/s (gradient about half Terzaghi's critical one) stays intact:
   // no fine grain above the initial surface, the skeleton still to a small fraction of a grain.
   EXPECT_EQ(peak(un["fines_above_surface"]), 0.0);
