@@ -6,7 +6,7 @@
 # settling before the timed steps. Usage: bench/coupled/run_dem_ratio.sh [BUILD] [SECONDS] [THREADS]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-build="${1:-$root/build}"
+build="$(cd "${1:-$root/build}" && pwd)"
 seconds="${2:-0.5}"
 export OMP_NUM_THREADS="${3:-2}"
 out="$(mktemp -d)"
