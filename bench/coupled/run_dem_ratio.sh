@@ -28,7 +28,9 @@ TOML
 wall() { /usr/bin/time -f %e "$@" 2>&1 >/dev/null | tail -1; }
 echo "load average before: $(cut -d' ' -f1 /proc/loadavg), $OMP_NUM_THREADS thread(s), $seconds s simulated"
 coupled=$(cd "$case_dir" && wall "$build/coupling/isphdem" run tank.toml --out "$out/coupled" \
-  --set inflow.velocity=0.005 --set time.end="$seconds" --set output.interval="$seconds")
-dry=$(cd "$out" && wall "$build/coupling/isphdem" run dry.toml --out "$out/dry")
+  --set inflow.velocity=0.005 --set time.end="$seconds" --set output.interval="$seconds") ||
+  { echo "the coupled run failed (rerun it by hand to see why)" >&2; exit 1; }
+dry=$(cd "$out" && wall "$build/coupling/isphdem" run dry.toml --out "$out/dry") ||
+  { echo "the DEM-only run failed" >&2; exit 1; }
 awk -v c="$coupled" -v d="$dry" 'BEGIN {
   printf "| coupled (0.5 cm/s) | DEM alone | ratio |\n|---:|---:|---:|\n| %.1f s | %.1f s | %.2f |\n", c, d, c / d }'
