@@ -50,6 +50,17 @@ std::vector<Sphere> member_sections(const DemBody& body, const std::vector<DemAt
   return s;
 }
 
+// How far x lies inside the union of the spheres (negative outside); separations taken with
+// the domain's minimum image (a default domain: none).
+template <int Dim>
+double depth_in(const std::vector<Sphere>& spheres, const isph::Vec<Dim>& x,
+                const isph::Domain<Dim>& domain = {}) {
+  double d = -std::numeric_limits<double>::max();
+  for (const auto& s : spheres)
+    d = std::max(d, s.r - domain.min_image(x - in_plane<Dim>(s.c)).norm());
+  return d;
+}
+
 }  // namespace
 
 PmsShape pms_shape_from_name(const std::string& name) {
@@ -136,9 +147,7 @@ std::vector<isph::Vec<Dim>> generate_pms_particles(const DemBody& body,
     while (true) {
       V x;
       for (int a = 0; a < Dim; ++a) x[a] = origin[a] + static_cast<double>(k[a]) * dx;
-      double depth = -std::numeric_limits<double>::max();
-      for (const auto& s : spheres) depth = std::max(depth, s.r - (x - in_plane<Dim>(s.c)).norm());
-      nodes.push_back({x, depth});
+      nodes.push_back({x, depth_in<Dim>(spheres, x)});
       int a = 0;
       while (a < Dim && ++k[a] > k1[a]) {
         k[a] = k0[a];
@@ -242,13 +251,9 @@ std::size_t remove_shared_pms_nodes(std::vector<std::vector<isph::Vec<Dim>>>& pa
   for (std::size_t b = 0; b < particles.size(); ++b)
     for (std::size_t k = 0; k < particles[b].size(); ++k)
       grid[key(particles[b][k])].push_back({b, k});
-  auto depth = [&](std::size_t b, const V& x) {
-    const auto spheres = member_sections<Dim>(bodies[b], members[b]);
-    double d = -std::numeric_limits<double>::max();
-    for (const auto& s : spheres)
-      d = std::max(d, s.r - domain.min_image(x - in_plane<Dim>(s.c)).norm());
-    return d;
-  };
+  std::vector<std::vector<Sphere>> sections;
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    sections.push_back(member_sections<Dim>(bodies[b], members[b]));
   std::vector<std::vector<uint8_t>> drop(particles.size());
   std::vector<std::size_t> left(particles.size());
   for (std::size_t b = 0; b < particles.size(); ++b) {
@@ -261,20 +266,19 @@ std::size_t remove_shared_pms_nodes(std::vector<std::vector<isph::Vec<Dim>>>& pa
     for (const Ref& r : refs) {
       if (drop[r.body][r.k]) continue;
       const V& x = particles[r.body][r.k];
-      std::array<long, 3> n = c;
       const long span = Dim == 3 ? 1 : 0;
       for (long i = -1; i <= 1; ++i)
         for (long j = -1; j <= 1; ++j)
           for (long l = -span; l <= span; ++l) {
-            n = {c[0] + i, c[1] + j, c[2] + l};
-            const auto it = grid.find(n);
+            const auto it = grid.find({c[0] + i, c[1] + j, c[2] + l});
             if (it == grid.end()) continue;
             for (const Ref& o : it->second) {
               if (o.body == r.body || drop[o.body][o.k] || drop[r.body][r.k]) continue;
               const V& y = particles[o.body][o.k];
               if (domain.min_image(x - y).squaredNorm() >= limit2) continue;
               // Keep the deeper one, unless that would empty the other body.
-              bool drop_r = depth(r.body, x) < depth(o.body, y);
+              bool drop_r = depth_in<Dim>(sections[r.body], x, domain) <
+                            depth_in<Dim>(sections[o.body], y, domain);
               if (drop_r && left[r.body] == 1) drop_r = false;
               if (!drop_r && left[o.body] == 1) continue;
               const Ref& gone = drop_r ? r : o;

@@ -123,12 +123,13 @@ void ResolvedCoupling<Dim>::initialize(const DemState& dem, isph::IsphSolver<Dim
     }
     positions[bi] = generate_pms_particles<Dim>(body, members, gen, origin);
   }
-  shared_removed_ = remove_shared_pms_nodes<Dim>(positions, dem.bodies, members_of, domain, dx);
-  if (shared_removed_ > 0)
+  const std::size_t shared =
+      remove_shared_pms_nodes<Dim>(positions, dem.bodies, members_of, domain, dx);
+  if (shared > 0)
     std::printf(
         "resolved coupling: %zu PMS particles dropped where touching bodies took the same "
         "lattice node\n",
-        shared_removed_);
+        shared);
 
   for (std::size_t bi = 0; bi < dem.bodies.size(); ++bi) {
     const DemBody& body = dem.bodies[bi];

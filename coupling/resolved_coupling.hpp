@@ -60,8 +60,6 @@ class ResolvedCoupling : public CouplingStage<Dim> {
   };
   const std::vector<BodyInfo>& bodies() const { return info_; }
   std::size_t removed_fluid() const { return removed_; }
-  // PMS particles dropped because a touching body took the same node (remove_shared_pms_nodes).
-  std::size_t shared_nodes_removed() const { return shared_removed_; }
   // The pose of a DEM body in the fluid's frame (2D: its x-y plane, rotation about z).
   isph::RigidPose<Dim> pose(const DemBody& body) const;
 
@@ -76,7 +74,6 @@ class ResolvedCoupling : public CouplingStage<Dim> {
   // initialize(). Moments are taken about that centroid (see after_fluid_step).
   std::vector<isph::Vec<Dim>> centroid_offset_;
   std::size_t removed_ = 0;
-  std::size_t shared_removed_ = 0;
 };
 
 }  // namespace isphdem

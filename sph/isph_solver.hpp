@@ -63,7 +63,7 @@ struct IsphConfig {
   double alpha_s = 0.001;
   bool free_surface = true;
   // Closed or periodic boxes: spread what the pinned pressure row would absorb over all rows
-  // (spread_pinned_source, sph/pressure_equation.hpp); costs a second solve per step.
+  // (spread_pinned_source, sph/pressure_equation.hpp); costs a second solve every 10th step.
   bool spread_pin = true;
   SurfaceCriteria surface;
   // Smagorinsky eddy viscosity nu_T = (C_s dx)^2 sqrt(2 S:S), added to nu in the viscous term.

@@ -40,6 +40,7 @@ void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb
   // examples/fluidization_2d the first-in-order choice changed often enough to make that
   // solve the largest part of the pressure cost).
   out.pinned = -1;
+  out.pin_row.clear();
   if (!has_dirichlet)
     for (int i = 0; i < n; ++i)
       if (particles.kind[i] != kWall && op.order[i] > 0 &&
@@ -88,17 +89,18 @@ void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb
       return diag_pos;
     };
 
+    // Interior pair weight: the fitted Laplacian, times the harmonic mean of the coefficients.
+    auto interior = [&](int k) {
+      if (!coefficient) return op.lap[k];
+      const double ci = (*coefficient)[i], cj = (*coefficient)[nb.index[k]];
+      return op.lap[k] * 2.0 * ci * cj / (ci + cj);
+    };
     const bool wall = particles.kind[i] == kWall;
     if (i == out.pinned) {
       // Keep the interior equation the pin replaces (spread_pinned_source).
-      out.pin_row.clear();
       double d = 0.0;
       for (int k = b; k < e; ++k) {
-        double lap = op.lap[k];
-        if (coefficient) {
-          const double cj = (*coefficient)[nb.index[k]], ci = (*coefficient)[i];
-          lap *= 2.0 * ci * cj / (ci + cj);
-        }
+        const double lap = interior(k);
         d -= lap;
         out.pin_row.emplace_back(nb.index[k], lap * scale);
       }
@@ -131,21 +133,10 @@ void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb
       out.b[i] = rho0 * bi / wsum;
       continue;
     }
-    if (coefficient) {
-      const auto& c = *coefficient;
-      const int d = put_neighbors([&](int k) {
-        const double cj = c[nb.index[k]];
-        const double lap = op.lap[k] * 2.0 * c[i] * cj / (c[i] + cj);
-        diag -= lap;
-        return lap * scale;
-      });
-      val[d] = diag * scale;
-      out.b[i] = rhs[i] * scale;
-      continue;
-    }
     const int d = put_neighbors([&](int k) {
-      diag -= op.lap[k];
-      return op.lap[k] * scale;
+      const double lap = interior(k);
+      diag -= lap;
+      return lap * scale;
     });
     val[d] = diag * scale;
     out.b[i] = rhs[i] * scale;
