@@ -63,7 +63,8 @@ struct IsphConfig {
   double alpha_s = 0.001;
   bool free_surface = true;
   // Closed or periodic boxes: spread what the pinned pressure row would absorb over all rows
-  // (spread_pinned_source, sph/pressure_equation.hpp); costs a second solve every 10th step.
+  // (spread_pinned_source, sph/pressure_equation.hpp); costs a second, looser solve every 10th
+  // step.
   bool spread_pin = true;
   SurfaceCriteria surface;
   // Smagorinsky eddy viscosity nu_T = (C_s dx)^2 sqrt(2 S:S), added to nu in the viscous term.
@@ -167,8 +168,9 @@ class IsphSolver {
   std::vector<Vec<Dim>> u_star_, wall_ghost_, shift_;
   std::vector<uint8_t> operator_mode_, full_support_, shift_mode_, dry_wall_;
   Eigen::VectorXd pressure_;
-  Eigen::VectorXd unit_response_;   // q of spread_pinned_source, reused for a few steps
-  int64_t unit_response_pin_ = -1;  // id of the particle pinned when q was solved
+  Eigen::VectorXd unit_response_;      // q of spread_pinned_source, reused for a few steps
+  int64_t unit_response_pin_ = -1;     // id of the particle pinned when q was solved
+  double unit_response_lambda_ = 0.0;  // the last step's lambda: p was spread by -lambda q
 };
 
 }  // namespace isph

@@ -51,7 +51,8 @@ TEST(DemRunCase, AdvancesInChunksUntilEndTime) {
 
 TEST(DemRunCase, RejectsAFluidStepThatIsNotSubstepsDemSteps) {
   isphdem::DemRunOptions options;
-  options.out_dir = fs::path(ISPHDEM_BINARY_DIR) / "tests" / "dem_run_case";
+  // Its own directory: ctest runs tests side by side (scripts/test.sh).
+  options.out_dir = fs::path(ISPHDEM_BINARY_DIR) / "tests" / "dem_run_case_reject";
   fs::create_directories(options.out_dir);
   options.fluid_dt = 2e-4;
   EXPECT_THROW(isphdem::run_dem_case(example_config(), 1e-3, options), std::runtime_error);
