@@ -11,6 +11,8 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 # One test per core, each on one thread: most cases are a few thousand particles, where a second
 # thread gains little, so two tests side by side finish the suite sooner than one on two threads.
 # The MPI tests run alone (RUN_SERIAL). Override with CTEST_PARALLEL_LEVEL / OMP_NUM_THREADS.
+# (nproc reads OMP_NUM_THREADS too: ask it for the cores before that is set.)
+jobs="${CTEST_PARALLEL_LEVEL:-$(env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc)}"
 export OMP_NUM_THREADS="${OMP_NUM_THREADS:-1}"
-ctest --test-dir "${ISPHDEM_BUILD_DIR:-$root/build}" --output-on-failure \
-  -j "${CTEST_PARALLEL_LEVEL:-$(nproc)}" -LE "slow|work_in_progress" "$@"
+ctest --test-dir "${ISPHDEM_BUILD_DIR:-$root/build}" --output-on-failure -j "$jobs" \
+  -LE "slow|work_in_progress" "$@"
