@@ -186,8 +186,10 @@ StepStats IsphSolver<Dim>::step(double dt) {
     throw SimulationError(
         "time step far beyond the CFL limit at t = " + fmt(time_) + " s: dt = " + fmt(dt) +
         " s moved particles " + fmt(dt * stats.max_speed / particles_.spacing) +
-        " spacings in one step (max |u| = " + fmt(stats.max_speed) +
-        " m/s); use time.dt = \"auto\" or a dt below " + fmt(limits().min()) + " s");
+        " spacings in one step (max |u| = " + fmt(stats.max_speed) + " m/s); use a dt below " +
+        fmt(limits().min()) +
+        " s (time.dt = \"auto\" in a fluid-only case; a coupled case needs time.dt and [dem] "
+        "substeps changed together) or find what accelerates the flow this much");
   return stats;
 }
 
