@@ -189,7 +189,8 @@ StepStats IsphSolver<Dim>::step(double dt) {
         " spacings in one step (max |u| = " + fmt(stats.max_speed) + " m/s); use a dt below " +
         fmt(limits().min()) +
         " s (time.dt = \"auto\" in a fluid-only case; a coupled case needs time.dt and [dem] "
-        "substeps changed together) or find what accelerates the flow this much");
+        "substeps changed together) or find what accelerates the flow this much; " +
+        describe_fastest());
   return stats;
 }
 
@@ -525,6 +526,26 @@ void IsphSolver<Dim>::keep_off_walls(int i) {
     const double vn = P.v[i].dot(nrm) - P.v[w].dot(nrm);
     if (vn < 0.0) P.v[i] -= vn * nrm;
   }
+}
+
+template <int Dim>
+std::string IsphSolver<Dim>::describe_fastest() const {
+  const auto& P = particles_;
+  int fast = -1;
+  for (int i = 0; i < static_cast<int>(P.size()); ++i)
+    if (P.kind[i] != kWall && (fast < 0 || P.v[i].norm() > P.v[fast].norm())) fast = i;
+  if (fast < 0) return "no moving particle";
+  // The neighbour list is the step's own (built before the particles moved): what the fastest
+  // particle's equations saw. A fluid particle whose support is mostly solid sits in a pocket
+  // between bodies (the semi-resolved erosion runs broke up from one).
+  static const char* const names[] = {"fluid", "wall", "solid (PMS)", "forcing-zone"};
+  int count[4] = {0, 0, 0, 0};
+  for (int k = nb_.begin(fast); k < nb_.end(fast); ++k) ++count[P.kind[nb_.index[k]]];
+  return std::string("the fastest is ") + names[P.kind[fast]] + " particle " +
+         std::to_string(P.id[fast]) + " at " + fmt<Dim>(P.x[fast]) + " m (" +
+         fmt(P.v[fast].norm()) + " m/s) with " + std::to_string(count[kFluid] + count[kForcing]) +
+         " fluid, " + std::to_string(count[kSolid]) + " solid and " + std::to_string(count[kWall]) +
+         " wall neighbours";
 }
 
 template <int Dim>

@@ -144,6 +144,8 @@ class IsphSolver {
   void update_forcing_kinds();
   void keep_off_walls(int i);
   const ForcingZone<Dim>* zone_of(const Vec<Dim>& x) const;
+  // Where the fastest particle is and what its support holds (for the CFL stop message).
+  std::string describe_fastest() const;
   void check_state(const char* where) const;
 
   IsphConfig<Dim> config_;

@@ -19,6 +19,9 @@ TEST(UnstableRun, StopsCleanlyWithOutputIntact) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.output.find("beyond the CFL limit"), std::string::npos);
   EXPECT_NE(r.output.find("time.dt = \"auto\""), std::string::npos);
+  // ... and says where: a fluid particle of the surge, with its support (no solids here).
+  EXPECT_NE(r.output.find("the fastest is fluid particle"), std::string::npos);
+  EXPECT_NE(r.output.find(" 0 solid and "), std::string::npos);
   EXPECT_NE(r.output.find("complete and valid"), std::string::npos);
   const int snaps = count_snapshots(dir / "out");
   EXPECT_GE(snaps, 2);
