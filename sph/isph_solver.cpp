@@ -531,9 +531,12 @@ void IsphSolver<Dim>::keep_off_walls(int i) {
 template <int Dim>
 std::string IsphSolver<Dim>::describe_fastest() const {
   const auto& P = particles_;
+  // The particles advect() takes max |u| over (solids are placed by their bodies), so that the
+  // particle named is the one whose speed the message quotes.
   int fast = -1;
   for (int i = 0; i < static_cast<int>(P.size()); ++i)
-    if (P.kind[i] != kWall && (fast < 0 || P.v[i].norm() > P.v[fast].norm())) fast = i;
+    if (P.kind[i] != kWall && P.kind[i] != kSolid && (fast < 0 || P.v[i].norm() > P.v[fast].norm()))
+      fast = i;
   if (fast < 0) return "no moving particle";
   // The neighbour list is the step's own (built before the particles moved): what the fastest
   // particle's equations saw. A fluid particle whose support is mostly solid sits in a pocket
