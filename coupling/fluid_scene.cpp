@@ -33,6 +33,7 @@ std::vector<std::string> fluid_scene_keys() {
           "initial.amplitude",
           "solver.alpha_s",
           "solver.min_wall_distance",
+          "solver.pocket_solid_fraction",
           "solver.free_surface",
           "solver.spread_pin",
           "solver.surface_threshold",
@@ -236,6 +237,11 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
 
   cfg.alpha_s = c.number("solver.alpha_s", cfg.alpha_s);
   cfg.min_wall_distance = c.number("solver.min_wall_distance", cfg.min_wall_distance);
+  cfg.pocket_solid_fraction = c.number("solver.pocket_solid_fraction", cfg.pocket_solid_fraction);
+  if (!(cfg.pocket_solid_fraction > 0.0))
+    throw CaseError(
+        "'solver.pocket_solid_fraction' must be positive (a solid share of the kernel support; "
+        "1 turns the pocket treatment off)");
   cfg.free_surface = c.boolean("solver.free_surface", cfg.free_surface);
   cfg.spread_pin = c.boolean("solver.spread_pin", cfg.spread_pin);
   cfg.surface.density_ratio = c.number("solver.surface_threshold", cfg.surface.density_ratio);

@@ -8,6 +8,7 @@
 
 #include "format_number.hpp"
 #include "free_surface.hpp"
+#include "pocket_fluid.hpp"
 #include "rigid_solids.hpp"
 #include "stopwatch.hpp"
 
@@ -176,6 +177,8 @@ StepStats IsphSolver<Dim>::step(double dt) {
   {
     Stopwatch w(timings_.rest);
     correct(dt);
+    stats.pocket_particles = follow_enclosing_solids(particles_, nb_, config_.pocket_solid_fraction,
+                                                     config_.density, dt);
     shift(dt);
     advect(dt, stats);
   }

@@ -74,6 +74,9 @@ struct IsphConfig {
   // Closest a fluid particle may come to a wall surface, in spacings (the first fluid layer sits
   // at 0.5).
   double min_wall_distance = 0.25;
+  // Fluid particles whose support is more than this share PMS solid follow the solids
+  // (sph/pocket_fluid.hpp); 1 turns it off.
+  double pocket_solid_fraction = 0.5;
   std::vector<ForcingZone<Dim>> forcing;
   ShiftingParams shifting;
   TimeStepParams time_step;
@@ -101,6 +104,7 @@ struct StepStats {
   // plus V0 for the rest: it shows compression or loss of volume that particle counts cannot.
   double fluid_volume = 0.0;
   double max_eddy_viscosity = 0.0;
+  int pocket_particles = 0;  // fluid particles blended towards the solids around them
 };
 
 template <int Dim>
