@@ -177,8 +177,7 @@ StepStats IsphSolver<Dim>::step(double dt) {
   {
     Stopwatch w(timings_.rest);
     correct(dt);
-    stats.pocket_particles = follow_enclosing_solids(particles_, nb_, config_.pocket_solid_fraction,
-                                                     config_.density, dt);
+    follow_enclosing_solids(particles_, nb_, config_.pocket_solid_fraction, config_.density, dt);
     shift(dt);
     advect(dt, stats);
   }

@@ -104,7 +104,6 @@ struct StepStats {
   // plus V0 for the rest: it shows compression or loss of volume that particle counts cannot.
   double fluid_volume = 0.0;
   double max_eddy_viscosity = 0.0;
-  int pocket_particles = 0;  // fluid particles blended towards the solids around them
 };
 
 template <int Dim>

@@ -4,38 +4,52 @@
 
 namespace isph {
 
+namespace {
+
+// Kernel weights of i's non-wall and solid neighbours, and the weighted sum of the solids'
+// velocities: the share and the blend target from one pass over the neighbours.
 template <int Dim>
-double solid_share(const Particles<Dim>& P, const Neighbors<Dim>& nb, int i) {
-  double solid = 0.0, all = 0.0;
+struct SolidSupport {
+  double all = 0.0, solid = 0.0;
+  Vec<Dim> solid_velocity_sum = Vec<Dim>::Zero();
+};
+
+template <int Dim>
+SolidSupport<Dim> solid_support(const Particles<Dim>& P, const Neighbors<Dim>& nb, int i) {
+  SolidSupport<Dim> s;
   for (int k = nb.begin(i); k < nb.end(i); ++k) {
     const int j = nb.index[k];
     if (P.kind[j] == kWall) continue;
-    all += nb.w[k];
-    if (P.kind[j] == kSolid) solid += nb.w[k];
+    s.all += nb.w[k];
+    if (P.kind[j] != kSolid) continue;
+    s.solid += nb.w[k];
+    s.solid_velocity_sum += nb.w[k] * P.v[j];
   }
-  return all > 0.0 ? solid / all : 0.0;
+  return s;
+}
+
+}  // namespace
+
+template <int Dim>
+double solid_share(const Particles<Dim>& P, const Neighbors<Dim>& nb, int i) {
+  const SolidSupport<Dim> s = solid_support(P, nb, i);
+  return s.all > 0.0 ? s.solid / s.all : 0.0;
 }
 
 template <int Dim>
 int follow_enclosing_solids(Particles<Dim>& P, const Neighbors<Dim>& nb, double onset, double rho0,
                             double dt) {
-  if (!(onset < 1.0)) return 0;
+  // Fluid-only and unresolved runs have no PMS particles: no sweep over the neighbours.
+  if (!(onset < 1.0) || P.count(kSolid) == 0) return 0;
   const int n = static_cast<int>(P.size());
   int blended = 0;
   // Serial: few particles qualify, and the reaction is scattered to shared solid neighbours.
   for (int i = 0; i < n; ++i) {
     if (P.kind[i] != kFluid) continue;
-    const double phi = solid_share(P, nb, i);
-    if (phi <= onset) continue;
-    double ws = 0.0;
-    Vec<Dim> vs = Vec<Dim>::Zero();
-    for (int k = nb.begin(i); k < nb.end(i); ++k) {
-      const int j = nb.index[k];
-      if (P.kind[j] != kSolid) continue;
-      ws += nb.w[k];
-      vs += nb.w[k] * P.v[j];
-    }
-    vs /= ws;
+    const SolidSupport<Dim> sup = solid_support(P, nb, i);
+    if (!(sup.solid > onset * sup.all)) continue;
+    const double phi = sup.solid / sup.all;
+    const Vec<Dim> vs = sup.solid_velocity_sum / sup.solid;
     const double s = std::min(1.0, (phi - onset) / kPocketRamp);
     const Vec<Dim> dv = -s * (P.v[i] - vs);
     P.v[i] += dv;
@@ -43,7 +57,7 @@ int follow_enclosing_solids(Particles<Dim>& P, const Neighbors<Dim>& nb, double 
     const Vec<Dim> reaction = -rho0 * P.volume * dv / dt;
     for (int k = nb.begin(i); k < nb.end(i); ++k) {
       const int j = nb.index[k];
-      if (P.kind[j] == kSolid) P.solid_force[j] += nb.w[k] / ws * reaction;
+      if (P.kind[j] == kSolid) P.solid_force[j] += nb.w[k] / sup.solid * reaction;
     }
     ++blended;
   }
