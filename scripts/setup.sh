@@ -11,6 +11,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev
   libtomlplusplus-dev
   python3-h5py python3-matplotlib python3-pil   # plots (PIL: GIFs), run with /usr/bin/python3
+  python3-numpy                     # scripts/cylinder_lbm_reference.py
   paraview                          # pvpython opens our XDMF in a test
 )
 
