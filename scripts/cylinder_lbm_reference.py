@@ -9,11 +9,11 @@ script computes what that configuration itself gives, so that the SPH result can
 "what the configuration does to C_d" (blockage and inlet) and "what the SPH discretisation adds".
 It shares no code with isphdem.
 
-    /usr/bin/python3 scripts/cylinder_lbm_reference.py --d 16 --width 20      # about 7 min
-    /usr/bin/python3 scripts/cylinder_lbm_reference.py --d 16 --width 40      # about 15 min
+    /usr/bin/python3 scripts/cylinder_lbm_reference.py --d 24 --width 20      # about 28 min
+    /usr/bin/python3 scripts/cylinder_lbm_reference.py --d 16 --width 40      # about 17 min
 
-Measured on this machine (docs/resolved.md): C_d = 2.410 (W = 10 D), 2.202 (20 D), 2.170 (40 D)
-at D = 16 lattice units, 30 D period along the stream, cylinder 13 D behind the band.
+Measured on this machine (docs/resolved.md), 30 D period along the stream, cylinder 13 D behind
+the band: C_d = 2.178 (D = 16) and 2.172 (D = 24) at W = 20 D, 2.146 (D = 16) at W = 40 D.
 """
 import argparse
 import sys
@@ -71,10 +71,13 @@ def main():
     # at a fraction q of it from x; Bouzidi et al. (2001) interpolate the reflected population
     # (second order in space; halfway bounce-back puts the wall at q = 1/2 for every link, a
     # staircase whose C_d moved by 1.2% between D = 16 and 24).
-    link, frac = [None] * 9, [None] * 9
+    # Per direction i: the link nodes x, the nodes x + c_i one further from the wall (Bouzidi's
+    # q < 1/2 branch reads them), and q.
+    link, far, frac = [None] * 9, [None] * 9, [None] * 9
     for i in range(1, 9):
-        link[i] = np.roll(solid, shift=tuple(C[i]), axis=(0, 1)) & ~solid
-        px, py = np.nonzero(link[i])
+        px, py = np.nonzero(np.roll(solid, shift=tuple(C[i]), axis=(0, 1)) & ~solid)
+        link[i] = (px, py)
+        far[i] = ((px + C[i, 0]) % nx, (py + C[i, 1]) % ny)
         dxw, dyw = px + 0.5 - xc, py + 0.5 - yc
         ex, ey = -C[i, 0], -C[i, 1]  # towards the wall
         a2 = ex * ex + ey * ey
@@ -88,7 +91,7 @@ def main():
     ux = np.where(solid, 0.0, U)
     uy = np.zeros((nx, ny))
     f = equilibrium(rho, ux, uy)
-    band_eq_u = np.full((nx, ny), U)
+    band_u, band_v = np.full(np.count_nonzero(band), U), np.zeros(np.count_nonzero(band))
     steps = int(round(a.end * D / U))
     window = int(round(4.0 * D / U))  # progress lines show the mean over the last 4 D/U
     history = np.zeros(steps)
@@ -98,7 +101,7 @@ def main():
         ux = (f[1] + f[5] + f[8] - f[3] - f[6] - f[7]) / rho
         uy = (f[2] + f[5] + f[6] - f[4] - f[7] - f[8]) / rho
         post = f - omega * (f - equilibrium(rho, ux, uy))
-        post[:, band] = equilibrium(rho, band_eq_u, np.zeros_like(rho))[:, band]
+        post[:, band] = equilibrium(rho[band], band_u, band_v)
         for i in range(9):
             f[i] = np.roll(post[i], shift=tuple(C[i]), axis=(0, 1))
         fx = 0.0
@@ -108,8 +111,7 @@ def main():
             if a.halfway:
                 back = here
             else:
-                far = np.roll(post[o], shift=(-C[i, 0], -C[i, 1]), axis=(0, 1))[m]
-                back = np.where(q < 0.5, 2 * q * here + (1 - 2 * q) * far,
+                back = np.where(q < 0.5, 2 * q * here + (1 - 2 * q) * post[o][far[i]],
                                 here / (2 * q) + (2 * q - 1) / (2 * q) * post[i][m])
             f[i][m] = back
             fx += C[o, 0] * (here + back).sum()
