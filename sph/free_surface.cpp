@@ -138,6 +138,26 @@ void mark_dry_walls(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
 }
 
 template <int Dim>
+void surface_depth(const Particles<Dim>& particles, const Neighbors<Dim>& nb, const Vec<Dim>& up,
+                   std::vector<double>& depth) {
+  const auto& P = particles;
+  const int np = static_cast<int>(P.size());
+  depth.assign(np, 0.0);
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < np; ++i) {
+    if (P.kind[i] == kWall || P.kind[i] == kSolid || !P.surface[i]) continue;
+    double ws = 0.0, hs = 0.0;
+    for (int k = nb.begin(i); k < nb.end(i); ++k) {
+      const int j = nb.index[k];
+      if (P.kind[j] == kWall || P.kind[j] == kSolid || !P.surface[j]) continue;
+      ws += nb.w[k];
+      hs -= nb.w[k] * up.dot(nb.rij[k]);  // r_ij = x_i - x_j
+    }
+    if (ws > 0.0) depth[i] = std::max(0.0, hs / ws);
+  }
+}
+
+template <int Dim>
 int reference_neighbor_count(const Kernel<Dim>& kernel, double dx) {
   const int m = static_cast<int>(std::ceil(kernel.support() / dx)) + 1;
   int count = -1;  // the particle itself
@@ -167,6 +187,10 @@ template void mark_dry_walls<2>(const Particles<2>&, const Neighbors<2>&, const 
                                 std::vector<uint8_t>&);
 template void mark_dry_walls<3>(const Particles<3>&, const Neighbors<3>&, const Vec<3>&, double,
                                 std::vector<uint8_t>&);
+template void surface_depth<2>(const Particles<2>&, const Neighbors<2>&, const Vec<2>&,
+                               std::vector<double>&);
+template void surface_depth<3>(const Particles<3>&, const Neighbors<3>&, const Vec<3>&,
+                               std::vector<double>&);
 template int reference_neighbor_count<2>(const Kernel<2>&, double);
 template int reference_neighbor_count<3>(const Kernel<3>&, double);
 template void mark_free_surface<2>(Particles<2>&, const std::vector<double>&, double,

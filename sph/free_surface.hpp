@@ -79,6 +79,15 @@ template <int Dim>
 void mark_dry_walls(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
                     const Vec<Dim>& gravity, double rho0, std::vector<uint8_t>& dry);
 
+// How far each free-surface particle sits below the surface its surface neighbours outline: the
+// kernel-weighted mean of up.(x_j - x_i) over free-surface fluid neighbours j, clamped at zero
+// (0 for every other particle). On a straight surface row, level or sloping, it is zero; a
+// particle of the second row exposed by a gap in a stretched top row (the upwelling of the
+// circulation tank) reads its depth under the row, 0.4-0.7 dx.
+template <int Dim>
+void surface_depth(const Particles<Dim>& particles, const Neighbors<Dim>& nb, const Vec<Dim>& up,
+                   std::vector<double>& depth);
+
 // Neighbours of an interior particle of a perfect lattice of spacing dx (20 in 2D at h = 1.3 dx).
 template <int Dim>
 int reference_neighbor_count(const Kernel<Dim>& kernel, double dx);

@@ -139,6 +139,15 @@ void IsphSolver<Dim>::update_geometry() {
   } else
     std::fill(particles_.surface.begin(), particles_.surface.end(), 0);
   if (config_.free_surface) mark_dry_solids(particles_, nb_, config_.gravity);
+  surface_depth_.clear();
+  surface_pressure_.clear();
+  if (config_.free_surface && config_.surface_refill && config_.gravity.squaredNorm() > 0.0) {
+    const Vec<Dim> up = -config_.gravity.normalized();
+    surface_depth(particles_, nb_, up, surface_depth_);
+    surface_pressure_.resize(n);
+    for (int i = 0; i < n; ++i)
+      surface_pressure_[i] = config_.density * config_.gravity.norm() * surface_depth_[i];
+  }
   // Walls need no operators; free-surface particles get the robust first-order forms (a
   // one-sided quadratic fit extrapolates). Their neighbours keep the quadratic fit: the Brookshaw
   // Laplacian is not exact for a linear (hydrostatic) field on a truncated support, and still
@@ -168,7 +177,8 @@ StepStats IsphSolver<Dim>::step(double dt) {
   {
     Stopwatch w(timings_.assembly);
     assemble_pressure(particles_, nb_, op_, rhs_, config_.gravity, config_.density, kernel_.h(),
-                      system_, porous_.active() ? &porous_.pressure_coefficient() : nullptr);
+                      system_, porous_.active() ? &porous_.pressure_coefficient() : nullptr,
+                      surface_pressure_.empty() ? nullptr : &surface_pressure_);
   }
   {
     Stopwatch w(timings_.solve);
@@ -447,7 +457,10 @@ void IsphSolver<Dim>::shift(double dt) {
   shift_mode_.resize(n);
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < n; ++i) {
-    shift_mode_[i] = P.kind[i] != kFluid ? 0 : (full_support_[i] ? 2 : 1);
+    // With surface_refill every particle that is not on the surface shifts freely: voids under
+    // the top row (return flow beside the walls) are otherwise closed by nothing.
+    const bool free_shift = full_support_[i] || (!surface_depth_.empty() && !P.surface[i]);
+    shift_mode_[i] = P.kind[i] != kFluid ? 0 : (free_shift ? 2 : 1);
     // Shifting repairs disorder inside the fluid. A splash tip or a toe particle whose support
     // is mostly wall has no meaningful concentration gradient: its shift came out at the cap,
     // against the flow, and the Taylor correction turned that into a velocity kick every step.
@@ -458,6 +471,25 @@ void IsphSolver<Dim>::shift(double dt) {
     }
   }
   compute_shifts(P, nb_, kernel_, config_.shifting, dt, shift_mode_, shift_);
+  if (!surface_depth_.empty()) {
+    // Lift exposed second-row particles onto the surface line (surface_refill).
+    const Vec<Dim> up = -config_.gravity.normalized();
+    const double cap = config_.shifting.max_fraction * P.spacing;
+    for (int i = 0; i < n; ++i) {
+      if (P.kind[i] != kFluid || !(surface_depth_[i] > 0.0)) continue;
+      // Only into a gap: nothing directly above within a column of half a spacing's radius.
+      bool blocked = false;
+      for (int k = nb_.begin(i); k < nb_.end(i) && !blocked; ++k) {
+        if (P.kind[nb_.index[k]] == kWall) continue;
+        const Vec<Dim> r = -nb_.rij[k];
+        const double h = up.dot(r);
+        blocked = h > 0.0 && h < 1.2 * P.spacing && (r - h * up).norm() < 0.6 * P.spacing;
+      }
+      if (blocked) continue;
+      shift_[i] += std::min(surface_depth_[i], cap) * up;
+      if (!shift_mode_[i]) shift_mode_[i] = 1;  // so that its velocity is Taylor-corrected
+    }
+  }
   // Taylor-correct velocities to the shifted positions (u_star_ reused as scratch), limited so
   // that no new extremum appears: each component stays within the range of the particle's own
   // and its fluid neighbours' values. On a truncated support (free surface, splash tip) the

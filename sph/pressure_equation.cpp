@@ -26,7 +26,8 @@ template <int Dim>
 void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
                        const Operators<Dim>& op, const std::vector<double>& rhs,
                        const Vec<Dim>& gravity, double rho0, double h, PressureSystem<Dim>& out,
-                       const std::vector<double>* coefficient) {
+                       const std::vector<double>* coefficient,
+                       const std::vector<double>* surface_pressure) {
   const int n = static_cast<int>(particles.size());
   // Interior rows are scaled by h^2 so that all rows have O(1) coefficients.
   const double scale = h * h;
@@ -111,7 +112,7 @@ void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb
     if (dirichlet || (op.order[i] == 0 && !wall)) {
       const int d = put_neighbors([](int) { return 0.0; });
       val[d] = 1.0;
-      out.b[i] = 0.0;
+      out.b[i] = surface_pressure && i != out.pinned ? (*surface_pressure)[i] : 0.0;
       continue;
     }
     if (wall) {
@@ -183,9 +184,11 @@ template void remove_net_source<2>(const Particles<2>&, std::vector<double>&);
 template void remove_net_source<3>(const Particles<3>&, std::vector<double>&);
 template void assemble_pressure<2>(const Particles<2>&, const Neighbors<2>&, const Operators<2>&,
                                    const std::vector<double>&, const Vec<2>&, double, double,
-                                   PressureSystem<2>&, const std::vector<double>*);
+                                   PressureSystem<2>&, const std::vector<double>*,
+                                   const std::vector<double>*);
 template void assemble_pressure<3>(const Particles<3>&, const Neighbors<3>&, const Operators<3>&,
                                    const std::vector<double>&, const Vec<3>&, double, double,
-                                   PressureSystem<3>&, const std::vector<double>*);
+                                   PressureSystem<3>&, const std::vector<double>*,
+                                   const std::vector<double>*);
 
 }  // namespace isph

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "free_surface.hpp"
@@ -127,6 +129,54 @@ TEST(FreeSurfaceScan, DisorderedInteriorBetweenDryWallsNotMarked) { check(1.0, 0
 // Marrone's 45-degree umbrella with h = 1.3 dx marked the lower row of this layer too; two p = 0
 // rows 0.66 dx apart lifted it in the circulation tank.
 TEST(FreeSurfaceScan, StaggeredTopLayerOnlyUpperRowMarked) { check(1.0, 0.0, false, true); }
+
+// surface_depth: how far a free-surface particle sits below the line its surface neighbours
+// outline. A particle of the second row exposed as surface under a level top row is one spacing
+// down; a top-row particle lowered by 0.3 dx is 0.3 dx down; the level row itself reads 0 (a
+// neighbour below it pulls the mean down, which is clamped), and unflagged particles read 0.
+TEST(SurfaceDepth, ReadsTheDepthBelowTheSurfaceRow) {
+  Block b = make_block(1.0, 0.0);
+  const double dx = b.p.spacing, top = 9.5 * dx;
+  int exposed = -1, lowered = -1;
+  for (std::size_t i = 0; i < b.p.size(); ++i) {
+    if (b.p.kind[i] == kWall) continue;
+    const Vec<2>& x = b.p.x[i];
+    if (std::abs(x[1] - top) < 1e-9) {
+      b.p.surface[i] = 1;
+      if (std::abs(x[0] - 15.5 * dx) < 1e-9) lowered = static_cast<int>(i);
+    }
+    if (std::abs(x[1] - (top - dx)) < 1e-9 && std::abs(x[0] - 5.5 * dx) < 1e-9) {
+      b.p.surface[i] = 1;
+      exposed = static_cast<int>(i);
+    }
+  }
+  ASSERT_GE(exposed, 0);
+  ASSERT_GE(lowered, 0);
+  b.p.x[lowered][1] -= 0.3 * dx;
+  Kernel<2> W(KernelType::WendlandC2, 1.3 * dx);
+  Domain<2> dom;
+  dom.lo = Vec<2>(0.0, -0.05);
+  dom.hi = Vec<2>(0.2, 0.2);
+  dom.periodic[0] = true;
+  NeighborSearch<2> search(dom, W.support());
+  const int64_t exposed_id = b.p.id[exposed], lowered_id = b.p.id[lowered];
+  search.sort(b.p);  // the lowered particle moved: cells and pair geometry again
+  search.build(b.p, W, b.nb);
+  for (std::size_t i = 0; i < b.p.size(); ++i) {
+    if (b.p.id[i] == exposed_id) exposed = static_cast<int>(i);
+    if (b.p.id[i] == lowered_id) lowered = static_cast<int>(i);
+  }
+  std::vector<double> depth;
+  surface_depth(b.p, b.nb, Vec<2>(0.0, 1.0), depth);
+  EXPECT_NEAR(depth[exposed], dx, 1e-12 * dx);
+  EXPECT_NEAR(depth[lowered], 0.3 * dx, 1e-12 * dx);
+  for (std::size_t i = 0; i < b.p.size(); ++i) {
+    if (static_cast<int>(i) == exposed || static_cast<int>(i) == lowered) continue;
+    EXPECT_EQ(depth[i], 0.0) << "particle at " << b.p.x[i].transpose();
+  }
+  printf("exposed second-row particle: depth %.4f dx; lowered top-row particle: %.4f dx\n",
+         depth[exposed] / dx, depth[lowered] / dx);
+}
 
 }  // namespace
 }  // namespace isph
