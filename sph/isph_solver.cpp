@@ -140,14 +140,8 @@ void IsphSolver<Dim>::update_geometry() {
     std::fill(particles_.surface.begin(), particles_.surface.end(), 0);
   if (config_.free_surface) mark_dry_solids(particles_, nb_, config_.gravity);
   surface_depth_.clear();
-  surface_pressure_.clear();
-  if (config_.free_surface && config_.surface_refill && config_.gravity.squaredNorm() > 0.0) {
-    const Vec<Dim> up = -config_.gravity.normalized();
-    surface_depth(particles_, nb_, up, surface_depth_);
-    surface_pressure_.resize(n);
-    for (int i = 0; i < n; ++i)
-      surface_pressure_[i] = config_.density * config_.gravity.norm() * surface_depth_[i];
-  }
+  if (config_.free_surface && config_.surface_refill && config_.gravity.squaredNorm() > 0.0)
+    surface_depth(particles_, nb_, Vec<Dim>(-config_.gravity.normalized()), surface_depth_);
   // Walls need no operators; free-surface particles get the robust first-order forms (a
   // one-sided quadratic fit extrapolates). Their neighbours keep the quadratic fit: the Brookshaw
   // Laplacian is not exact for a linear (hydrostatic) field on a truncated support, and still
@@ -178,7 +172,7 @@ StepStats IsphSolver<Dim>::step(double dt) {
     Stopwatch w(timings_.assembly);
     assemble_pressure(particles_, nb_, op_, rhs_, config_.gravity, config_.density, kernel_.h(),
                       system_, porous_.active() ? &porous_.pressure_coefficient() : nullptr,
-                      surface_pressure_.empty() ? nullptr : &surface_pressure_);
+                      surface_depth_.empty() ? nullptr : &surface_depth_);
   }
   {
     Stopwatch w(timings_.solve);

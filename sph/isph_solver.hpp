@@ -177,7 +177,7 @@ class IsphSolver {
   PressureSystem<Dim> system_;
   PorousMedium<Dim> porous_;
   std::vector<double> number_density_, divergence_r_, rhs_, eddy_viscosity_;
-  std::vector<double> surface_depth_, surface_pressure_;
+  std::vector<double> surface_depth_;  // empty unless surface_refill acts
   double max_eddy_viscosity_ = 0.0;
   std::vector<Vec<Dim>> u_star_, wall_ghost_, shift_;
   std::vector<uint8_t> operator_mode_, full_support_, shift_mode_, dry_wall_;
