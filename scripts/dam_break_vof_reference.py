@@ -31,7 +31,8 @@ What it is
       Z_int   dx * sum(alpha.water) over the bottom row (water length of the row; no threshold)
 
 Requirements
-    OpenFOAM (interFoam, blockMesh, setFields). On Debian: `apt-get install openfoam`
+    OpenFOAM (interFoam, blockMesh, setFields). On Debian: `ISPHDEM_REFERENCE=1 bash scripts/setup.sh`
+    (installs the openfoam package)
     (v1912). The environment is taken from $WM_PROJECT_DIR if set, else from
     /usr/share/openfoam/etc/bashrc (or --foam-bashrc). Python 3 standard library only.
 
@@ -137,8 +138,9 @@ def foam_env(bashrc_opt):
         env["OMP_NUM_THREADS"] = "1"
     for tool in ("blockMesh", "setFields", "interFoam"):
         if shutil.which(tool, path=env.get("PATH")) is None:
-            die("'%s' not found on PATH. Install OpenFOAM, e.g. `apt-get install openfoam` "
-                "(Debian, v1912), or source its etc/bashrc before running." % tool)
+            die("'%s' not found on PATH. Install OpenFOAM (Debian package openfoam, v1912) with "
+                "`ISPHDEM_REFERENCE=1 bash scripts/setup.sh`, or source its etc/bashrc before "
+                "running." % tool)
     if not env.get("WM_PROJECT_DIR") or not os.path.isfile(
             os.path.join(env["WM_PROJECT_DIR"], "etc", "controlDict")):
         die("OpenFOAM found but its etc/controlDict is not: set WM_PROJECT_DIR or pass "

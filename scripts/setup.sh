@@ -14,6 +14,9 @@ PACKAGES=(
   python3-numpy                     # scripts/cylinder_lbm_reference.py
   paraview                          # pvpython opens our XDMF in a test
 )
+# Reference solvers outside the build and the tests, on request only (large):
+# ISPHDEM_REFERENCE=1 adds OpenFOAM for scripts/dam_break_vof_reference.py.
+if [ "${ISPHDEM_REFERENCE:-0}" = 1 ]; then PACKAGES+=(openfoam); fi
 
 missing=()
 for p in "${PACKAGES[@]}"; do
