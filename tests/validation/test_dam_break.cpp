@@ -12,12 +12,12 @@
 // delayed by dT = 0.285 (20 ms at a = 0.1 m), so no instant-release solver can come within 5% of
 // the table. Both tables are printed.
 //
-// DAM_BREAK_RESOLUTION (particles across a) is 40 for the default build of this test and 80 for
-// the slow variant. Measured worst differences from the reference for T <= 2.5: -9.1% at
-// a/dx = 40 (T = 2.2-2.5: the toe thins to one or two particles, which the surge front does not
-// count) and -7.9% at 80 (T = 1.97: the toe breaks into pieces and the front jumps back). The
-// default build holds the front to 10% of the reference (DAM_BREAK_FRONT_TOLERANCE), twice the
-// issue's 5%; the slow build asserts the 5% itself and is work_in_progress until it passes.
+// DAM_BREAK_RESOLUTION (particles across a) is 40 for the default build of this test (the issue's
+// minimum; the case's solver.alpha_s = 0.05 relaxes the compression of the toe, which made it
+// trail the reference by up to 9.1% with the default 0.001) and 80 for the slow variant. Measured
+// worst differences from the reference for T <= 2.5: 4.7% at a/dx = 40 (T = 1.63) and 7.1% at
+// a/dx = 80 (T = 2.20, where the toe breaks into fragments and the surge front jumps back; the
+// furthest particle stays within 4.4% there): the slow variant is work_in_progress.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -32,9 +32,6 @@
 
 #ifndef DAM_BREAK_RESOLUTION
 #define DAM_BREAK_RESOLUTION 40
-#endif
-#ifndef DAM_BREAK_FRONT_TOLERANCE
-#define DAM_BREAK_FRONT_TOLERANCE 0.10
 #endif
 
 namespace isphdem::validation {
@@ -148,11 +145,10 @@ TEST(DamBreak, SurgeFrontMatchesInstantReleaseReference) {
   }
   std::printf(
       "  a/dx = %d, T <= 2.5: worst difference from the instant-release reference %.1f%% (at T = "
-      "%.2f; allowed %.0f%%); from Martin & Moyce %.1f%% (not asserted: the experiment's release "
+      "%.2f; allowed 5%%); from Martin & Moyce %.1f%% (not asserted: the experiment's release "
       "lags)\n",
-      DAM_BREAK_RESOLUTION, 100.0 * worst, worst_T, 100.0 * DAM_BREAK_FRONT_TOLERANCE,
-      100.0 * worst_mm);
-  EXPECT_LT(worst, DAM_BREAK_FRONT_TOLERANCE);
+      DAM_BREAK_RESOLUTION, 100.0 * worst, worst_T, 100.0 * worst_mm);
+  EXPECT_LT(worst, 0.05);
 }
 
 }  // namespace
