@@ -37,17 +37,19 @@
 namespace isphdem::validation {
 namespace {
 
-// Martin & Moyce (1952), n^2 = 2 (column twice as high as wide): (T, Z).
-const std::vector<std::pair<double, double>> kMartinMoyce = {
-    {0.00, 1.00}, {0.41, 1.11}, {0.84, 1.23}, {1.19, 1.44}, {1.43, 1.67},
-    {1.63, 1.89}, {1.82, 2.11}, {1.97, 2.33}, {2.20, 2.56}, {2.32, 2.78},
-    {2.50, 3.00}, {2.64, 3.22}, {2.82, 3.44}, {2.96, 3.67}};
-
-// The instant-release reference at the same T: interFoam, 40 cells per a, front where alpha = 0.5
-// in the bottom cell row (scripts/dam_break_vof_reference.py; OpenFOAM v1912, Debian's openfoam
-// package; 3.5 min on one core). 80 cells per a give the same within 0.3% (the script's header).
-const std::vector<double> kInstantRelease = {1.000, 1.119, 1.410, 1.721, 1.966, 2.194, 2.422,
-                                             2.610, 2.912, 3.072, 3.324, 3.526, 3.795, 4.006};
+// Front positions Z = x/a at the times T of Martin & Moyce (1952), n^2 = 2 (column twice as high
+// as wide): theirs, and the instant-release reference's at the same T (interFoam, 40 cells per a,
+// front where alpha = 0.5 in the bottom cell row; scripts/dam_break_vof_reference.py, OpenFOAM
+// v1912 from Debian's openfoam package, 3.5 min on one core; 80 cells per a give the same within
+// 0.3%, the script's header).
+struct FrontRow {
+  double T, martin_moyce, instant_release;
+};
+const std::vector<FrontRow> kFrontTable = {
+    {0.00, 1.00, 1.000}, {0.41, 1.11, 1.119}, {0.84, 1.23, 1.410}, {1.19, 1.44, 1.721},
+    {1.43, 1.67, 1.966}, {1.63, 1.89, 2.194}, {1.82, 2.11, 2.422}, {1.97, 2.33, 2.610},
+    {2.20, 2.56, 2.912}, {2.32, 2.78, 3.072}, {2.50, 3.00, 3.324}, {2.64, 3.22, 3.526},
+    {2.82, 3.44, 3.795}, {2.96, 3.67, 4.006}};
 
 // Front of the continuous surge: the largest x among fluid particles within 2 dx of the floor
 // that have at least 6 fluid neighbours within 2 dx (a full lattice has 12), plus dx/2. Single
@@ -88,8 +90,8 @@ DamBreakResult run_dam_break(double cfl) {
   const double t_scale = std::sqrt(2.0 * g / a);  // T = t * t_scale
   DamBreakResult out;
   try {
-    for (const auto& [T, Z] : kMartinMoyce) {
-      if (T > 0.0) run.run_until(T / t_scale);
+    for (const auto& row : kFrontTable) {
+      if (row.T > 0.0) run.run_until(row.T / t_scale);
       out.z.push_back(front(s, a, true));
       out.z_any.push_back(front(s, a, false));
     }
@@ -104,12 +106,12 @@ DamBreakResult run_dam_break(double cfl) {
   std::printf(
       "     T   Z (M&M)  Z (VOF)   Z (surge)  vs VOF   vs M&M    Z (any particle)  vs VOF\n");
   for (std::size_t k = 0; k < out.z.size(); ++k) {
-    const double mm = kMartinMoyce[k].second, vof = kInstantRelease[k];
+    const double mm = kFrontTable[k].martin_moyce, vof = kFrontTable[k].instant_release;
     auto pct = [](double z, double ref) { return 100.0 * (z - ref) / ref; };
     std::printf(
         "  %5.2f   %5.2f    %6.3f    %6.3f  %+6.1f%%  %+6.1f%%    %6.3f           %+6.1f%%\n",
-        kMartinMoyce[k].first, mm, vof, out.z[k], pct(out.z[k], vof), pct(out.z[k], mm),
-        out.z_any[k], pct(out.z_any[k], vof));
+        kFrontTable[k].T, mm, vof, out.z[k], pct(out.z[k], vof), pct(out.z[k], mm), out.z_any[k],
+        pct(out.z_any[k], vof));
   }
   if (!out.failure.empty()) std::printf("  stopped: %s\n", out.failure.c_str());
   return out;
@@ -134,14 +136,14 @@ TEST(DamBreak, RunsStablyToT3) {
 
 TEST(DamBreak, SurgeFrontMatchesInstantReleaseReference) {
   const auto& r = dam_break();
-  ASSERT_EQ(r.z.size(), kMartinMoyce.size()) << "run stopped early: " << r.failure;
+  ASSERT_EQ(r.z.size(), kFrontTable.size()) << "run stopped early: " << r.failure;
   double worst = 0.0, worst_T = 0.0, worst_mm = 0.0;
   for (std::size_t k = 1; k < r.z.size(); ++k) {
-    if (kMartinMoyce[k].first > 2.5) continue;
-    const double e = std::abs(r.z[k] - kInstantRelease[k]) / kInstantRelease[k];
-    if (e > worst) worst = e, worst_T = kMartinMoyce[k].first;
-    worst_mm =
-        std::max(worst_mm, std::abs(r.z[k] - kMartinMoyce[k].second) / kMartinMoyce[k].second);
+    const FrontRow& row = kFrontTable[k];
+    if (row.T > 2.5) continue;
+    const double e = std::abs(r.z[k] - row.instant_release) / row.instant_release;
+    if (e > worst) worst = e, worst_T = row.T;
+    worst_mm = std::max(worst_mm, std::abs(r.z[k] - row.martin_moyce) / row.martin_moyce);
   }
   std::printf(
       "  a/dx = %d, T <= 2.5: worst difference from the instant-release reference %.1f%% (at T = "
