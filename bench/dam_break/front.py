@@ -20,13 +20,13 @@ import sys
 
 import numpy as np
 
-# Martin & Moyce (1952), column twice as high as wide: (T, Z).
-MARTIN_MOYCE = [(0.41, 1.11), (0.84, 1.23), (1.19, 1.44), (1.43, 1.67), (1.63, 1.89),
-                (1.82, 2.11), (1.97, 2.33), (2.20, 2.56), (2.32, 2.78), (2.50, 3.00),
-                (2.64, 3.22), (2.82, 3.44), (2.96, 3.67)]
-# interFoam VOF, instant release, 40 cells per a, at the same T (scripts/dam_break_vof_reference.py).
-INSTANT_RELEASE = [1.119, 1.410, 1.721, 1.966, 2.194, 2.422, 2.610, 2.912, 3.072, 3.324, 3.526,
-                   3.795, 4.006]
+# Front Z = x/a at the times T of Martin & Moyce (1952), column twice as high as wide:
+# (T, Z Martin & Moyce, Z instant-release reference), the reference being interFoam VOF,
+# 40 cells per a (scripts/dam_break_vof_reference.py), as in tests/validation/test_dam_break.cpp.
+FRONT_TABLE = [(0.41, 1.11, 1.119), (0.84, 1.23, 1.410), (1.19, 1.44, 1.721), (1.43, 1.67, 1.966),
+               (1.63, 1.89, 2.194), (1.82, 2.11, 2.422), (1.97, 2.33, 2.610), (2.20, 2.56, 2.912),
+               (2.32, 2.78, 3.072), (2.50, 3.00, 3.324), (2.64, 3.22, 3.526), (2.82, 3.44, 3.795),
+               (2.96, 3.67, 4.006)]
 
 
 def front(xy, dx):
@@ -84,7 +84,7 @@ def main():
     T, Z = np.array(T), np.array(Z)
     rows, errors = [], []
     print(f"{'T':>6} {'Z M&M':>7} {'Z VOF':>7} {'Z':>7} {'vs VOF':>8} {'vs M&M':>8}")
-    for (t_ref, z_mm), z_ref in zip(MARTIN_MOYCE, INSTANT_RELEASE):
+    for t_ref, z_mm, z_ref in FRONT_TABLE:
         if len(T) == 0 or t_ref > T.max():
             print(f"{t_ref:6.2f} {z_mm:7.2f} {z_ref:7.3f}   (not reached)")
             continue
