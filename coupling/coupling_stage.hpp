@@ -41,8 +41,8 @@ class CouplingStage {
   virtual std::string name() const = 0;
   virtual void initialize(const DemState& dem, isph::IsphSolver<Dim>& solver) = 0;
   virtual void before_fluid_step(const DemState& dem, isph::IsphSolver<Dim>& solver) = 0;
-  virtual void after_fluid_step(const DemState& dem, const isph::IsphSolver<Dim>& solver,
-                                double dt, DemLoads& loads) = 0;
+  virtual void after_fluid_step(const DemState& dem, const isph::IsphSolver<Dim>& solver, double dt,
+                                DemLoads& loads) = 0;
 };
 
 }  // namespace isphdem

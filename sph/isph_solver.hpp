@@ -1,11 +1,11 @@
 #pragma once
-// Stabilised ISPH (Asai et al. 2012) on the unified equations. One step:
-//   sort + neighbours + pair geometry + operator weights (once, reused below)
-//   free-surface marking
-//   predictor  u* = u + dt (nu lap u + g)
-//   pressure   lap p = rho0/dt div u* + alpha_s (rho0 - rho_i)/dt^2
-//   corrector  u = u* - dt/rho0 grad p
-//   advection  x += dt u, plus particle shifting
+// Stabilised ISPH (Asai et al. 2012) on the unified equations. One step (step(), isph_solver.cpp):
+//   neighbours, pair geometry, operator weights (once, reused below)  step_neighbors.cpp
+//   free-surface marking, full-support flags                          step_free_surface.cpp
+//   predictor  u* = u + dt (nu lap u + g)                             step_predictor.cpp
+//   pressure   lap p = rho0/dt div u* + alpha_s (rho0 - rho_i)/dt^2   step_pressure.cpp
+//   corrector  u = u* - dt/rho0 grad p, advection x += dt u            step_correction.cpp
+//   particle shifting                                                 step_shifting.cpp
 // In porous regions (eps < 1 or K > 0 on some particle) the predictor, the PPE coefficient and
 // the corrector take the Darcy-Brinkman form of porous_medium.hpp.
 #include <cmath>
@@ -140,24 +140,29 @@ class IsphSolver {
   void set_gravity(const Vec<Dim>& g) { config_.gravity = g; }
 
  private:
-  // The phases of step(), in order.
-  void update_geometry();
-  void compute_wall_ghosts();
+  // The stages of step(), in order, each in the file named.
+  void find_neighbors();            // step_neighbors.cpp
+  void detect_free_surface();       // step_free_surface.cpp
+  void compute_operator_weights();  // step_neighbors.cpp
+  void compute_wall_ghosts();       // step_predictor.cpp
   void compute_eddy_viscosity();
   void predict(double dt);
   void set_wall_u_star(double dt);
-  void mark_full_support();
-  void compute_pressure_rhs(double dt);
+  void mark_full_support();              // step_free_surface.cpp
+  void compute_pressure_rhs(double dt);  // step_pressure.cpp
+  void assemble_pressure_system();
   void solve_pressure(StepStats& stats);
-  void correct(double dt);
-  void shift(double dt);
-  void advect(double dt, StepStats& stats);
+  void correct(double dt);                   // step_correction.cpp
+  void shift(double dt);                     // step_shifting.cpp
+  void advect(double dt, StepStats& stats);  // step_correction.cpp
   void update_forcing_kinds();
   void keep_off_walls(int i);
   const ForcingZone<Dim>* zone_of(const Vec<Dim>& x) const;
   // Where the fastest particle is and what its support holds (for the CFL stop message).
   std::string describe_fastest() const;
   void check_state(const char* where) const;
+  void check_cfl(double dt, const StepStats& stats) const;
+  static LinearSolverConfig unit_solver_config(LinearSolverConfig c);
 
   IsphConfig<Dim> config_;
   Domain<Dim> domain_;

@@ -19,10 +19,10 @@
 #include <string>
 #include <vector>
 
-#include "case_file.hpp"
-#include "case_keys.hpp"
-#include "fluid_scene.hpp"
-#include "resolved_coupling.hpp"
+#include "case/case_file.hpp"
+#include "case/fluid_scene.hpp"
+#include "resolved/resolved_coupling.hpp"
+#include "run/case_keys.hpp"
 
 namespace {
 

@@ -6,14 +6,15 @@
 #include <string>
 #include <vector>
 
-#include "case_file.hpp"
-#include "case_keys.hpp"
-#include "coupled_run.hpp"
-#include "dem_case_config.hpp"
-#include "dem_liggghts_backend.hpp"
-#include "fluid_scene.hpp"
-#include "run_settings.hpp"
-#include "unresolved_case.hpp"
+#include "case/case_file.hpp"
+#include "case/fluid_scene.hpp"
+#include "case/run_settings.hpp"
+#include "dem/dem_case_config.hpp"
+#include "dem/dem_liggghts_backend.hpp"
+#include "run/case_keys.hpp"
+#include "run/coupled_run.hpp"
+#include "run/coupling_stages.hpp"
+#include "unresolved/unresolved_coupling.hpp"
 
 namespace isphdem::coupled_test {
 

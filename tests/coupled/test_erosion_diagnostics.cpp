@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "erosion_diagnostics.hpp"
+#include "run/erosion_diagnostics.hpp"
 
 namespace isphdem {
 namespace {

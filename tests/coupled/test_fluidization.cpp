@@ -18,7 +18,7 @@
 #include <cstdio>
 
 #include "coupled_case.hpp"
-#include "drag_law.hpp"
+#include "unresolved/drag_law.hpp"
 
 #ifndef FLUIDIZATION_END
 #define FLUIDIZATION_END 0.3

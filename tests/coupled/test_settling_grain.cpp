@@ -10,7 +10,7 @@
 #include <cstdio>
 
 #include "coupled_case.hpp"
-#include "drag_law.hpp"
+#include "unresolved/drag_law.hpp"
 
 namespace isphdem::coupled_test {
 namespace {

@@ -1,5 +1,5 @@
 // The [dem] case table and the fluid/DEM time-step check.
-#include "dem_case_config.hpp"
+#include "dem/dem_case_config.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // MockDemBackend: free spheres integrate piecewise-constant loads exactly.
-#include "dem_mock_backend.hpp"
+#include "dem/dem_mock_backend.hpp"
 
 #include <gtest/gtest.h>
 

@@ -11,7 +11,7 @@
 #include <set>
 
 #include "atom.h"
-#include "dem_liggghts_backend.hpp"
+#include "dem/dem_liggghts_backend.hpp"
 
 namespace {
 

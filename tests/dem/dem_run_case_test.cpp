@@ -1,5 +1,5 @@
 // A DEM-only case ([dem] table, no fluid) through run_dem_case: chunks of substeps until t_end.
-#include "dem_run_case.hpp"
+#include "dem/dem_run_case.hpp"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "dem_liggghts_backend.hpp"
+#include "dem/dem_liggghts_backend.hpp"
 
 namespace isphdem::test {
 

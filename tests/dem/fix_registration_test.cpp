@@ -1,7 +1,7 @@
 // fix couple/isph must reach Debian's prebuilt libliggghts through run-time registration.
 #include <gtest/gtest.h>
 
-#include "dem_liggghts_session.hpp"
+#include "dem/dem_liggghts_session.hpp"
 #include "fix_couple_isph.h"
 #include "input.h"
 #include "lammps.h"

@@ -1,6 +1,6 @@
 // diagnostics.csv: a header row, rows whose numbers read back exactly, on disk after every row,
 // and misuse (wrong row length, bad column names, a different header to append to) rejected.
-#include "diagnostics_writer.hpp"
+#include "io/diagnostics_writer.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <limits>
 
+#include "io/snapshot_writer.hpp"
 #include "output_test_support.hpp"
-#include "snapshot_writer.hpp"
 
 namespace {
 

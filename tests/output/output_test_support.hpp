@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "snapshot.hpp"
+#include "io/snapshot.hpp"
 
 namespace output_test {
 

@@ -2,8 +2,8 @@
 // number of steps, point count and point arrays of the last step. Skipped without pvpython.
 #include <gtest/gtest.h>
 
+#include "io/snapshot_writer.hpp"
 #include "output_test_support.hpp"
-#include "snapshot_writer.hpp"
 
 namespace {
 

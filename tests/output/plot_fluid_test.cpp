@@ -3,8 +3,8 @@
 // Skipped when /usr/bin/python3 or its h5py/matplotlib are missing.
 #include <gtest/gtest.h>
 
+#include "io/snapshot_writer.hpp"
 #include "output_test_support.hpp"
-#include "snapshot_writer.hpp"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // Snapshots written by SnapshotWriter read back exactly with the plain HDF5 C API, malformed input
 // writes nothing, and whatever happens (bad data halfway through a file, a killed process) the
 // directory only ever holds complete snapshots.
-#include "snapshot_writer.hpp"
+#include "io/snapshot_writer.hpp"
 
 #include <gtest/gtest.h>
 #include <signal.h>

@@ -1,16 +1,16 @@
 // The .xdmf files SnapshotWriter keeps: structure ParaView's XDMF 2 reader needs (Temporal
 // Collection of Uniform Polyvertex grids), times ascending and exact, and every DataItem pointing
 // at an existing HDF5 dataset with the declared shape and number type.
-#include "xdmf_writer.hpp"
+#include "io/xdmf_writer.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 
 #include "h5_read.hpp"
+#include "io/snapshot_writer.hpp"
 #include "mini_xml.hpp"
 #include "output_test_support.hpp"
-#include "snapshot_writer.hpp"
 
 namespace {
 

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "case_file.hpp"
-#include "fluid_scene.hpp"
-#include "resolved_coupling.hpp"
-#include "run_settings.hpp"
+#include "case/case_file.hpp"
+#include "case/fluid_scene.hpp"
+#include "case/run_settings.hpp"
+#include "resolved/resolved_coupling.hpp"
 
 namespace isphdem::resolved_test {
 

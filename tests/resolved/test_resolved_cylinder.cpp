@@ -22,11 +22,11 @@
 #include <string>
 #include <vector>
 
-#include "case_keys.hpp"
-#include "fluid_run.hpp"
-#include "resolved_coupling.hpp"
+#include "resolved/resolved_coupling.hpp"
 #include "resolved_support.hpp"
-#include "unresolved_case.hpp"
+#include "run/case_keys.hpp"
+#include "run/coupling_stages.hpp"
+#include "run/fluid_run.hpp"
 
 namespace isphdem::validation {
 namespace {

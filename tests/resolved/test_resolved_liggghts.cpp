@@ -12,7 +12,7 @@
 
 #include "dem_test_support.hpp"
 #include "lattice.hpp"
-#include "resolved_coupling.hpp"
+#include "resolved/resolved_coupling.hpp"
 
 namespace isphdem {
 namespace {

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <random>
 
-#include "drag_distribution.hpp"
+#include "unresolved/drag_distribution.hpp"
 
 namespace isphdem {
 namespace {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "drag_law.hpp"
+#include "unresolved/drag_law.hpp"
 
 namespace isphdem {
 namespace {

@@ -10,11 +10,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "drag_law.hpp"
 #include "isph_solver.hpp"
-#include "mean_flow_drive.hpp"
 #include "periodic_column.hpp"
-#include "unresolved_coupling.hpp"
+#include "unresolved/drag_law.hpp"
+#include "unresolved/mean_flow_drive.hpp"
+#include "unresolved/unresolved_coupling.hpp"
 
 namespace isphdem {
 namespace {

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <random>
 
-#include "porosity_map.hpp"
+#include "unresolved/porosity_map.hpp"
 
 namespace isphdem {
 namespace {

@@ -11,7 +11,7 @@
 
 #include "isph_solver.hpp"
 #include "lattice.hpp"
-#include "unresolved_coupling.hpp"
+#include "unresolved/unresolved_coupling.hpp"
 
 namespace isphdem {
 namespace {

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "case_file.hpp"
-#include "fluid_scene.hpp"
-#include "run_settings.hpp"
+#include "case/case_file.hpp"
+#include "case/fluid_scene.hpp"
+#include "case/run_settings.hpp"
 
 namespace isphdem::validation {
 

@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "case_path.hpp"
-#include "fluid_run.hpp"
+#include "run/fluid_run.hpp"
 
 #ifndef CIRCULATION_TANK_END
 #define CIRCULATION_TANK_END 0.3

@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "case_path.hpp"
-#include "fluid_run.hpp"
+#include "run/fluid_run.hpp"
 
 #ifndef DAM_BREAK_RESOLUTION
 #define DAM_BREAK_RESOLUTION 40

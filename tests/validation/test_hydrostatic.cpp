@@ -8,7 +8,7 @@
 #include <map>
 
 #include "case_path.hpp"
-#include "fluid_run.hpp"
+#include "run/fluid_run.hpp"
 
 namespace isphdem::validation {
 namespace {

@@ -18,12 +18,12 @@
 #include <cstdio>
 
 #include "case_path.hpp"
-#include "drag_law.hpp"
-#include "fluid_run.hpp"
 #include "isph_solver.hpp"
 #include "lattice.hpp"
 #include "periodic_column.hpp"
-#include "porosity_map.hpp"
+#include "run/fluid_run.hpp"
+#include "unresolved/drag_law.hpp"
+#include "unresolved/porosity_map.hpp"
 
 namespace isphdem::validation {
 namespace {

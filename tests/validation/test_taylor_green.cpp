@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "case_path.hpp"
-#include "fluid_run.hpp"
+#include "run/fluid_run.hpp"
 #include "taylor_green_amplitude.hpp"
 
 namespace isphdem::validation {

@@ -1,0 +1,34 @@
+// The `[coupling]` table: which grains the fluid resolves (docs/resolved.md, "Case keys"). Both
+// the unresolved and the resolved stage read it, so it lives here rather than in either room.
+// clang-format off
+//   [coupling]
+//   model = "unresolved"       # every grain unresolved, clump spheres too (default)
+//         | "semi-resolved"    # clumps resolved by PMS particles, free spheres unresolved
+//         | "resolved"         # clumps resolved, no porosity/drag stage
+//   slab_thickness = 1e-3      # quasi-2D: DEM slab thickness T [m] (alias unresolved.slab_thickness)
+//   pms_shape = "auto"         # "lattice" | "per_sphere" | "auto"
+//   pms_volume = "dem"         # "dem" | "particles"
+//   pms_overlap = 0.5          # fluid closer than this many dx to a PMS particle is removed
+// clang-format on
+#ifndef ISPHDEM_COUPLING_TABLE_HPP
+#define ISPHDEM_COUPLING_TABLE_HPP
+
+#include <string>
+#include <vector>
+
+#include "case/case_file.hpp"
+
+namespace isphdem {
+
+std::vector<std::string> coupling_keys();
+
+// coupling.model, checked: "unresolved" (the default), "semi-resolved" or "resolved".
+std::string coupling_model(const CaseFile& c);
+
+// The quasi-2D DEM slab thickness T [m], one value for both stages; the older key
+// unresolved.slab_thickness still works. Throws CaseError when neither or both are set.
+double slab_thickness(const CaseFile& c);
+
+}  // namespace isphdem
+
+#endif

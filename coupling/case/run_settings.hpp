@@ -1,0 +1,24 @@
+#pragma once
+// The [time] and [output] tables: how long to run, how the time step is chosen, how often to write.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "case/case_file.hpp"
+#include "time_step.hpp"
+
+namespace isphdem {
+
+struct RunSettings {
+  double t_end = 0.0;
+  std::optional<double> fixed_dt;  // time.dt as a number; empty for "auto"
+  double max_dt = 1e300;
+  isph::TimeStepParams limits;
+  double output_interval = 0.0;  // simulated seconds between snapshots
+  long diagnostics_every = 10;   // steps between diagnostics rows
+};
+
+std::vector<std::string> run_settings_keys();
+RunSettings parse_run_settings(const CaseFile& c);
+
+}  // namespace isphdem

@@ -1,0 +1,48 @@
+// Writes one HDF5 file per output step, DIR/snap_<step>.h5, and keeps DIR/<group>.xdmf (fluid,
+// dem, bodies: every group with a "position") listing all of them for ParaView. Layout and
+// guarantees are in docs/output.md.
+//
+// Crash safety: each file is written under a hidden temporary name and renamed into place, so at
+// any moment every snap_*.h5 and *.xdmf in DIR is complete, and the .xdmf only lists snapshots
+// that exist. Nothing needs to be called at the end of a run.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "io/snapshot.hpp"
+#include "io/xdmf_writer.hpp"
+
+namespace isphdem {
+
+class SnapshotWriter {
+ public:
+  // Creates `dir` if needed (std::runtime_error if it exists and is not a directory).
+  // fresh: remove what an earlier run left in `dir` (snap_*.h5, *.xdmf, diagnostics.csv), so old
+  //   and new results never mix. Construct it before the DiagnosticsWriter for the same directory.
+  // !fresh (continuing a run): keep existing snapshots and list them in the .xdmf; the first
+  //   write() removes the ones after its step, which belong to the abandoned continuation.
+  explicit SnapshotWriter(std::filesystem::path dir, bool fresh = true);
+
+  // Writes DIR/snap_<step>.h5 (replacing a snapshot of the same step) and rewrites the .xdmf of
+  // each group in it. std::invalid_argument for a malformed snapshot (nothing written),
+  // std::runtime_error naming file and dataset if HDF5 or the file system fails (the previous
+  // snapshots and .xdmf stay as they were). Returns the path written.
+  std::filesystem::path write(const Snapshot& snapshot);
+
+  const std::filesystem::path& directory() const { return dir_; }
+
+  static std::string file_name(long step);  // "snap_00001200.h5"
+
+ private:
+  void index_existing();
+  void drop_steps_after(long step);
+  void update_xdmf(const std::string& group);
+
+  std::filesystem::path dir_;
+  std::map<std::string, std::map<long, XdmfStep>> index_;  // group -> step -> shapes
+  bool written_ = false;
+};
+
+}  // namespace isphdem

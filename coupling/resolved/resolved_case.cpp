@@ -1,0 +1,32 @@
+#include "resolved/resolved_case.hpp"
+
+#include "case/coupling_table.hpp"
+
+namespace isphdem {
+
+template <int Dim>
+std::unique_ptr<ResolvedCoupling<Dim>> make_resolved_coupling(const CaseFile& c,
+                                                              const FluidScene<Dim>& scene) {
+  ResolvedSettings s;
+  s.spacing = scene.particles.spacing;
+  s.fluid_density = scene.config.density;
+  if (Dim == 2) s.slab_thickness = slab_thickness(c);
+  try {
+    s.shape = pms_shape_from_name(c.string("coupling.pms_shape", "auto"));
+  } catch (const std::invalid_argument& e) {
+    throw CaseError(std::string("'coupling.pms_shape': ") + e.what());
+  }
+  const std::string volume = c.string("coupling.pms_volume", "dem");
+  if (volume != "dem" && volume != "particles")
+    throw CaseError("'coupling.pms_volume' must be \"dem\" or \"particles\"");
+  s.dem_volume = volume == "dem";
+  s.overlap = c.positive("coupling.pms_overlap", s.overlap);
+  return std::make_unique<ResolvedCoupling<Dim>>(s);
+}
+
+template std::unique_ptr<ResolvedCoupling<2>> make_resolved_coupling<2>(const CaseFile&,
+                                                                        const FluidScene<2>&);
+template std::unique_ptr<ResolvedCoupling<3>> make_resolved_coupling<3>(const CaseFile&,
+                                                                        const FluidScene<3>&);
+
+}  // namespace isphdem

@@ -1,0 +1,58 @@
+// The coupled driver: one DemBackend, one IsphSolver and a list of CouplingStages, advanced
+// together one fluid step at a time in the sequence of coupling_stage.hpp (DESIGN.md decision
+// 2). The fluid step is fixed and must equal `substeps` DEM steps. Stages are independent of
+// each other, so a resolved (PMS) stage is added next to the unresolved one by appending it.
+#ifndef ISPHDEM_COUPLED_RUN_HPP
+#define ISPHDEM_COUPLED_RUN_HPP
+
+#include <memory>
+#include <vector>
+
+#include "coupling_stage.hpp"
+#include "dem/dem_backend.hpp"
+#include "run/fluid_run.hpp"
+
+namespace isphdem {
+
+// Wall seconds spent per part of the coupled step.
+struct CoupledTimings {
+  double dem = 0, coupling = 0, fluid = 0;
+  double total() const { return dem + coupling + fluid; }
+};
+
+template <int Dim>
+class CoupledRun {
+ public:
+  // The backend must be initialized. Checks settings.fixed_dt == substeps x DEM dt (throws
+  // CaseError naming both and the matching values) and calls every stage's initialize().
+  CoupledRun(FluidScene<Dim> scene, const RunSettings& settings, DemBackend& backend, int substeps,
+             std::vector<std::unique_ptr<CouplingStage<Dim>>> stages);
+
+  // One fluid step of dt with the exchange before and after, then `substeps` DEM steps.
+  isph::StepStats advance();
+  // Steps until time t is reached (the fixed dt; the last step may pass t by less than dt).
+  void run_until(double t, const std::function<void(const isph::StepStats&)>& after_step = {});
+
+  double dt() const { return dt_; }
+  int substeps() const { return substeps_; }
+  isph::IsphSolver<Dim>& solver() { return fluid_.solver(); }
+  const isph::IsphSolver<Dim>& solver() const { return fluid_.solver(); }
+  DemBackend& dem() { return backend_; }
+  // The loads handed to the DEM in the last step (the hydrodynamic loads of the output).
+  const DemLoads& loads() const { return loads_; }
+  const std::vector<std::unique_ptr<CouplingStage<Dim>>>& stages() const { return stages_; }
+  const CoupledTimings& timings() const { return timings_; }
+
+ private:
+  FluidRun<Dim> fluid_;
+  DemBackend& backend_;
+  int substeps_;
+  double dt_;
+  std::vector<std::unique_ptr<CouplingStage<Dim>>> stages_;
+  DemLoads loads_;
+  CoupledTimings timings_;
+};
+
+}  // namespace isphdem
+
+#endif

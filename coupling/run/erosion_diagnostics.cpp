@@ -1,0 +1,100 @@
+#include "run/erosion_diagnostics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace isphdem {
+
+template <int Dim>
+int ErosionDiagnostics<Dim>::across_axis() const {
+  // The horizontal axis of the fluid plane: the first axis with no gravity component.
+  for (int a = 0; a < Dim; ++a)
+    if (std::abs(up_[a]) < 0.5) return a;
+  return 0;
+}
+
+template <int Dim>
+ErosionDiagnostics<Dim>::ErosionDiagnostics(const DemState& initial, const Vec3& up,
+                                            double reference_speed, double grain_density)
+    : up_(up),
+      reference_speed_(reference_speed > 0 ? reference_speed : 1.0),
+      grain_density_(grain_density) {
+  const int h = across_axis();
+  surface0_ = -std::numeric_limits<double>::infinity();
+  bottom0_ = std::numeric_limits<double>::infinity();
+  lo0_ = std::numeric_limits<double>::infinity();
+  hi0_ = -lo0_;
+  for (const auto& a : initial.atoms) {
+    surface0_ = std::max(surface0_, height(a.x) + a.radius);
+    bottom0_ = std::min(bottom0_, height(a.x) - a.radius);
+    lo0_ = std::min(lo0_, a.x[h] - a.radius);
+    hi0_ = std::max(hi0_, a.x[h] + a.radius);
+  }
+  for (const auto& b : initial.bodies) body0_[b.id] = b.x;
+}
+
+template <int Dim>
+ErosionMeasures ErosionDiagnostics<Dim>::measure(const DemState& dem,
+                                                 const isph::Particles<Dim>& fluid) const {
+  ErosionMeasures m;
+  if (dem.atoms.empty()) return m;
+  const int h = across_axis();
+  constexpr double kColumn = 2e-3;
+  const int columns = std::max(1, static_cast<int>(std::ceil((hi0_ - lo0_) / kColumn)));
+  std::vector<double> top(columns, -std::numeric_limits<double>::infinity());
+  for (const auto& a : dem.atoms) {
+    const double z = height(a.x);
+    if (a.body == -1 && z - a.radius > surface0_) {
+      ++m.fines_above;
+      m.fines_above_mass += grain_density_ * 4.0 / 3.0 * M_PI * a.radius * a.radius * a.radius;
+    }
+    const int c = static_cast<int>(std::floor((a.x[h] - lo0_) / kColumn));
+    if (c >= 0 && c < columns) top[c] = std::max(top[c], z + a.radius);
+  }
+  std::vector<double> filled;
+  for (double t : top)
+    if (std::isfinite(t)) filled.push_back(t);
+  if (!filled.empty()) {
+    std::nth_element(filled.begin(), filled.begin() + filled.size() / 2, filled.end());
+    m.surface_height = filled[filled.size() / 2];
+  }
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    if (fluid.kind[i] != isph::kFluid) continue;
+    Vec3 x{0, 0, 0};
+    for (int a = 0; a < Dim; ++a) x[a] = fluid.x[i][a];
+    const double z = height(x);
+    if (z < bottom0_ || z > surface0_ || x[h] < lo0_ || x[h] > hi0_) continue;
+    const double eps = fluid.porosity[i] > 0 ? fluid.porosity[i] : 1.0;
+    m.max_pore_speed_ratio = std::max(m.max_pore_speed_ratio, fluid.v[i].norm() / eps);
+  }
+  m.max_pore_speed_ratio /= reference_speed_;
+  int n = 0;
+  for (const auto& b : dem.bodies) {
+    const auto it = body0_.find(b.id);
+    if (it == body0_.end()) continue;
+    double d2 = 0;
+    for (int a = 0; a < Dim; ++a) d2 += (b.x[a] - it->second[a]) * (b.x[a] - it->second[a]);
+    m.skeleton_displacement += std::sqrt(d2);
+    ++n;
+  }
+  if (n) m.skeleton_displacement /= n;
+  return m;
+}
+
+template <int Dim>
+std::vector<std::string> ErosionDiagnostics<Dim>::columns() {
+  return {"fines_above_surface", "fines_above_mass", "max_pore_speed_ratio", "surface_height",
+          "skeleton_displacement"};
+}
+
+template <int Dim>
+std::vector<double> ErosionDiagnostics<Dim>::row(const ErosionMeasures& m) {
+  return {double(m.fines_above), m.fines_above_mass, m.max_pore_speed_ratio, m.surface_height,
+          m.skeleton_displacement};
+}
+
+template class ErosionDiagnostics<2>;
+template class ErosionDiagnostics<3>;
+
+}  // namespace isphdem

@@ -1,0 +1,64 @@
+#include "run/fluid_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace isphdem {
+
+namespace {
+template <int Dim>
+isph::IsphConfig<Dim> with_limits(isph::IsphConfig<Dim> c, const RunSettings& s) {
+  c.time_step = s.limits;
+  return c;
+}
+}  // namespace
+
+template <int Dim>
+FluidRun<Dim>::FluidRun(FluidScene<Dim> scene, const RunSettings& settings)
+    : settings_(settings),
+      solver_(with_limits(scene.config, settings), scene.domain, std::move(scene.particles)) {
+  if (settings_.fixed_dt) {
+    const auto l = solver_.limits();
+    if (*settings_.fixed_dt > l.min()) {
+      std::ostringstream m;
+      m << "time.dt = " << *settings_.fixed_dt << " s is beyond the stable limit " << l.min()
+        << " s (" << l.limiting() << " limit; CFL " << l.cfl << ", viscous " << l.viscous
+        << ", force " << l.force << " s): set time.dt below " << l.min() << " or use \"auto\"";
+      throw CaseError(m.str());
+    }
+  }
+}
+
+template <int Dim>
+double FluidRun<Dim>::next_dt() const {
+  if (settings_.fixed_dt) return *settings_.fixed_dt;
+  return std::min(solver_.limits().min(), settings_.max_dt);
+}
+
+template <int Dim>
+isph::StepStats FluidRun<Dim>::advance() {
+  return solver_.step(next_dt());
+}
+
+template <int Dim>
+void FluidRun<Dim>::run_until(double t,
+                              const std::function<void(const isph::StepStats&)>& after_step) {
+  // A relative tolerance keeps round-off from adding one tiny extra step.
+  while (solver_.time() < t * (1.0 - 1e-12)) {
+    double dt = next_dt();
+    if (!settings_.fixed_dt) {
+      // Land exactly on t with equal steps rather than one short last step: the stabilised PPE's
+      // density term scales as 1/dt^2, so a sliver of a step would kick the pressure.
+      const double rest = t - solver_.time();
+      dt = rest / std::ceil(rest / dt - 1e-9);
+    }
+    const isph::StepStats s = solver_.step(dt);
+    if (after_step) after_step(s);
+  }
+}
+
+template class FluidRun<2>;
+template class FluidRun<3>;
+
+}  // namespace isphdem

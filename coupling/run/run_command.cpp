@@ -1,0 +1,465 @@
+#include "run/run_command.hpp"
+
+#include <mpi.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "case/case_file.hpp"
+#include "case/fluid_scene.hpp"
+#include "case/run_settings.hpp"
+#include "dem/dem_case_config.hpp"
+#include "dem/dem_liggghts_backend.hpp"
+#include "dem/dem_run_case.hpp"
+#include "io/dem_snapshot.hpp"
+#include "io/diagnostics_writer.hpp"
+#include "io/fluid_snapshot.hpp"
+#include "io/progress_line.hpp"
+#include "io/snapshot_writer.hpp"
+#include "run/case_keys.hpp"
+#include "run/coupled_run.hpp"
+#include "run/coupling_stages.hpp"
+#include "run/erosion_diagnostics.hpp"
+#include "run/fluid_run.hpp"
+#include "unresolved/unresolved_coupling.hpp"
+
+namespace isphdem {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* kUsage =
+    "usage: isphdem run CASE.toml --out DIR [--set key=value ...] [--quiet]\n"
+    "  --out DIR        output directory (snap_<step>.h5, fluid.xdmf, diagnostics.csv);\n"
+    "                   results of an earlier run there are replaced\n"
+    "  --set key=value  override a case key, e.g. --set time.end=0.2 (repeatable)\n"
+    "  --quiet          no progress line and no summary\n";
+
+struct Arguments {
+  fs::path case_file;
+  fs::path out;
+  std::vector<std::string> overrides;
+  bool quiet = false;
+};
+
+Arguments parse_arguments(int argc, char** argv) {
+  Arguments a;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&](const char* what) -> std::string {
+      if (i + 1 >= argc) throw CaseError(std::string(what) + " needs a value\n" + kUsage);
+      return argv[++i];
+    };
+    if (arg == "--out")
+      a.out = value("--out");
+    else if (arg == "--set")
+      a.overrides.push_back(value("--set"));
+    else if (arg.rfind("--set=", 0) == 0)
+      a.overrides.push_back(arg.substr(6));
+    else if (arg == "--quiet")
+      a.quiet = true;
+    else if (arg.rfind("-", 0) == 0)
+      throw CaseError("unknown option '" + arg + "'\n" + kUsage);
+    else if (a.case_file.empty())
+      a.case_file = arg;
+    else
+      throw CaseError("more than one case file given ('" + a.case_file.string() + "', '" + arg +
+                      "')");
+  }
+  if (a.case_file.empty()) throw CaseError(std::string("no case file given\n") + kUsage);
+  if (a.out.empty())
+    throw CaseError(std::string("no output directory given (--out DIR)\n") + kUsage);
+  return a;
+}
+
+// A case with [dem] and no fluid: the grains advance in chunks of dem.substeps, exactly as they
+// will between fluid steps of a coupled case. Output goes through rank 0.
+int run_dem_only(const CaseFile& c, const Arguments& args) {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  const auto* table = c.table()["dem"].as_table();
+  if (!table) throw CaseError("'dem' must be a table: [dem] with script and substeps");
+  DemCaseConfig dem;
+  try {
+    dem = parse_dem_table(*table, c.directory());
+  } catch (const std::runtime_error& e) {
+    throw CaseError(e.what());
+  }
+  const RunSettings settings = parse_run_settings(c);
+  std::unique_ptr<SnapshotWriter> writer;
+  std::unique_ptr<DiagnosticsWriter> diagnostics;
+  if (rank == 0) {
+    writer = std::make_unique<SnapshotWriter>(args.out);
+    diagnostics = std::make_unique<DiagnosticsWriter>(
+        args.out / "diagnostics.csv",
+        std::vector<std::string>{"time", "step", "wall_seconds", "ppe_iterations", "max_speed",
+                                 "atoms", "bodies"});
+    if (!args.quiet)
+      std::printf("isphdem run: %s (DEM only: %s, %d substeps per chunk) to t = %g s\n",
+                  c.path().string().c_str(), dem.script.string().c_str(), dem.substeps,
+                  settings.t_end);
+  }
+  const double start = omp_get_wtime();
+  double next_output = 0.0;
+  ProgressLine progress(settings.t_end, !args.quiet && rank == 0);
+  DemRunOptions options;
+  options.out_dir = args.out;
+  options.fluid_dt = settings.fixed_dt;
+  options.after_chunk = [&](DemBackend& backend, long chunk) {
+    const double t = chunk * dem.substeps * backend.timestep();
+    const bool last = t >= settings.t_end * (1.0 - 1e-12);
+    if (t < next_output * (1.0 - 1e-9) && !last) {
+      if (rank == 0) progress.update(t, chunk);
+      return;
+    }
+    const DemState state = backend.state();  // collective
+    while (next_output <= t * (1.0 + 1e-9)) next_output += settings.output_interval;
+    if (rank != 0) return;
+    Snapshot snap;
+    snap.step = state.step;
+    snap.time = t;
+    add_dem_groups(state, HydroLoads{}, snap);
+    writer->write(snap);
+    double vmax = 0.0;
+    for (const auto& a : state.atoms)
+      vmax = std::max(vmax, std::sqrt(a.v[0] * a.v[0] + a.v[1] * a.v[1] + a.v[2] * a.v[2]));
+    diagnostics->row({t, double(state.step), omp_get_wtime() - start, 0.0, vmax,
+                      double(state.atoms.size()), double(state.bodies.size())});
+    progress.update(t, chunk);
+  };
+  int rc = 0;
+  try {
+    rc = run_dem_case(dem, settings.t_end, options);
+  } catch (const std::runtime_error& e) {
+    progress.finish();
+    throw CaseError(e.what());
+  }
+  progress.finish();
+  if (rank == 0 && !args.quiet)
+    std::printf("done: DEM-only run in %s wall\n",
+                format_duration(omp_get_wtime() - start).c_str());
+  return rc;
+}
+
+// Advances `run` (FluidRun or CoupledRun) to settings.t_end with each output time as a landing
+// point, so snapshots fall on t = k * interval. A SimulationError stops the run: the progress
+// line is closed, `report` says where it stopped (the snapshots already written are complete),
+// and false comes back. `end_tolerance` is the relative slack on t_end.
+template <class Run, class StepCallback, class WriteSnapshot>
+bool run_to_end(Run& run, const RunSettings& settings, double end_tolerance,
+                const StepCallback& after_step, const WriteSnapshot& snapshot,
+                ProgressLine& progress, bool report, const fs::path& out) {
+  const auto& solver = run.solver();
+  try {
+    for (long k = 1; solver.time() < settings.t_end * (1.0 - end_tolerance); ++k) {
+      run.run_until(std::min(k * settings.output_interval, settings.t_end), after_step);
+      snapshot();
+    }
+  } catch (const isph::SimulationError& e) {
+    progress.finish();
+    if (report)
+      std::fprintf(stderr,
+                   "isphdem run: stopped at t = %g s, step %ld: %s\n"
+                   "  output written so far in %s is complete and valid.\n",
+                   solver.time(), solver.steps(), e.what(), out.string().c_str());
+    return false;
+  }
+  progress.finish();
+  return true;
+}
+
+template <int Dim>
+int run_case(const CaseFile& c, const Arguments& args) {
+  const RunSettings settings = parse_run_settings(c);
+  FluidRun<Dim> run(build_fluid_scene<Dim>(c), settings);
+  auto& solver = run.solver();
+  const auto& P = solver.particles();
+
+  if (!args.quiet) {
+    const auto l = solver.limits();
+    std::printf("isphdem run: %s (%dD)\n  particles: %zu fluid, %zu wall; dx = %g m, h = %g m\n",
+                c.path().string().c_str(), Dim, P.count(isph::kFluid), P.count(isph::kWall),
+                P.spacing, solver.kernel().h());
+    if (settings.fixed_dt)
+      std::printf("  time step: fixed %g s (stable limit now %g s, %s)\n", *settings.fixed_dt,
+                  l.min(), l.limiting().c_str());
+    else
+      std::printf("  time step: auto, now %g s (%s limit; CFL %g, viscous %g, force %g s)\n",
+                  run.next_dt(), l.limiting().c_str(), l.cfl, l.viscous, l.force);
+    std::printf("  output: %s every %g s to t = %g s\n", args.out.string().c_str(),
+                settings.output_interval, settings.t_end);
+    std::fflush(stdout);
+  }
+
+  SnapshotWriter writer(args.out);
+  // The case as run, overrides applied, next to the results.
+  {
+    std::ofstream f(args.out / "case_used.toml");
+    f << "# " << c.path().string() << " with the overrides of this run\n" << c.table() << "\n";
+  }
+  DiagnosticsWriter diagnostics(
+      args.out / "diagnostics.csv",
+      {"time", "step", "wall_seconds", "ppe_iterations", "max_speed", "dt", "ppe_residual",
+       "surface_particles", "kinetic_energy", "fluid_volume", "max_eddy_viscosity"});
+  auto snapshot = [&]() {
+    Snapshot s;
+    s.step = solver.steps();
+    s.time = solver.time();
+    add_fluid_group(solver.particles(), s);
+    writer.write(s);
+  };
+
+  const double start = omp_get_wtime();
+  ProgressLine progress(settings.t_end, !args.quiet);
+  snapshot();
+  long ppe_total = 0;
+  auto after_step = [&](const isph::StepStats& st) {
+    ppe_total += st.ppe_iterations;
+    const long step = solver.steps();
+    if (step % settings.diagnostics_every == 0) {
+      double ke = 0.0;
+      for (std::size_t i = 0; i < P.size(); ++i)
+        if (P.kind[i] != isph::kWall)
+          ke += 0.5 * solver.config().density * P.volume * P.v[i].squaredNorm();
+      diagnostics.row({solver.time(), double(step), omp_get_wtime() - start,
+                       double(st.ppe_iterations), st.max_speed, st.dt, st.ppe_residual,
+                       double(st.surface_particles), ke, st.fluid_volume, st.max_eddy_viscosity});
+    }
+    progress.update(solver.time(), step);
+  };
+  if (!run_to_end(run, settings, 1e-12, after_step, snapshot, progress, true, args.out)) return 1;
+
+  if (!args.quiet) {
+    const double wall = omp_get_wtime() - start;
+    const auto& t = solver.timings();
+    const long steps = solver.steps();
+    std::printf(
+        "done: t = %g s in %ld steps, %s wall, %.3g particle-steps/s, %.1f PPE iterations/step\n",
+        solver.time(), steps, format_duration(wall).c_str(), double(P.size()) * steps / wall,
+        steps ? double(ppe_total) / steps : 0.0);
+    std::printf(
+        "  time per part: neighbours %.0f%%, operators %.0f%%, assembly %.0f%%, solve %.0f%%, "
+        "rest %.0f%%\n",
+        100 * t.neighbors / t.total(), 100 * t.operators / t.total(), 100 * t.assembly / t.total(),
+        100 * t.solve / t.total(), 100 * t.rest / t.total());
+  }
+  return 0;
+}
+
+// Height of the fine-grain bed: the 95th percentile of the grain centres' heights along -g
+// (the top of the bed without the few grains thrown up above it), or the largest height when
+// there are fewer than 20 grains. NaN without grains.
+double bed_height(const DemState& state, const Vec3& up) {
+  std::vector<double> h;
+  for (const auto& a : state.atoms)
+    if (a.body == -1) h.push_back(a.x[0] * up[0] + a.x[1] * up[1] + a.x[2] * up[2]);
+  if (h.empty()) return std::nan("");
+  std::sort(h.begin(), h.end());
+  if (h.size() < 20) return h.back();
+  return h[static_cast<std::size_t>(0.95 * double(h.size() - 1))];
+}
+
+DemCaseConfig dem_config(const CaseFile& c) {
+  const auto* table = c.table()["dem"].as_table();
+  if (!table) throw CaseError("'dem' must be a table: [dem] with script and substeps");
+  try {
+    return parse_dem_table(*table, c.directory());
+  } catch (const std::runtime_error& e) {
+    throw CaseError(e.what());
+  }
+}
+
+// A case with [fluid] and [dem]: fine grains (free spheres) coupled unresolved. The fluid is
+// replicated on every rank (the DEM state is gathered to all); rank 0 writes the output.
+template <int Dim>
+int run_coupled(const CaseFile& c, const Arguments& args) {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  const bool talk = rank == 0 && !args.quiet;
+  const RunSettings settings = parse_run_settings(c);
+  const DemCaseConfig dem = dem_config(c);
+  // Checked here as well as in CoupledRun so that it stops before LIGGGHTS writes its screen.
+  if (!settings.fixed_dt)
+    throw CaseError(
+        "a coupled case needs a fixed fluid step: set time.dt = [dem] substeps x the "
+        "script's DEM timestep (not \"auto\")");
+  FluidScene<Dim> scene = build_fluid_scene<Dim>(c);
+  auto stages = make_coupling_stages<Dim>(c, scene, settings.fixed_dt.value_or(0.0));
+  Vec3 up{0.0, 0.0, 0.0};
+  {
+    isph::Vec<Dim> g = scene.config.gravity;
+    if (g.norm() == 0.0) g[Dim - 1] = -1.0;
+    for (int a = 0; a < Dim; ++a) up[a] = -g[a] / g.norm();
+  }
+  if (rank == 0) fs::create_directories(args.out);
+  LiggghtsBackend backend(dem.liggghts_args(args.out));
+  backend.initialize({dem.script, {}});
+  CoupledRun<Dim> run(std::move(scene), settings, backend, dem.substeps, std::move(stages));
+  auto& solver = run.solver();
+  const auto& P = solver.particles();
+  const UnresolvedCoupling<Dim>* unresolved = nullptr;
+  for (const auto& st : run.stages())
+    if (!unresolved) unresolved = dynamic_cast<const UnresolvedCoupling<Dim>*>(st.get());
+  if (talk) {
+    std::printf(
+        "isphdem run: %s (%dD, coupled)\n  fluid: %zu fluid, %zu wall particles; dx = %g m\n"
+        "  DEM: %s, %zu atoms; fluid dt %g s = %d x DEM dt %g s\n  output: %s every %g s to "
+        "t = %g s\n",
+        c.path().string().c_str(), Dim, P.count(isph::kFluid), P.count(isph::kWall), P.spacing,
+        dem.script.string().c_str(), backend.state().atoms.size(), run.dt(), run.substeps(),
+        backend.timestep(), args.out.string().c_str(), settings.output_interval, settings.t_end);
+    std::fflush(stdout);
+  }
+  // Grain density for the mass of ejected fines: that of the clumps when there are any (the
+  // DEM state has no per-atom mass).
+  double grain_density = std::nan("");
+  for (const auto& b : backend.state().bodies)
+    if (b.volume > 0) grain_density = b.mass / b.volume;
+  const ErosionDiagnostics<Dim> erosion(
+      backend.state(), up, c.has("inflow.velocity") ? std::abs(c.number("inflow.velocity")) : 1.0,
+      grain_density);
+  std::unique_ptr<SnapshotWriter> writer;
+  std::unique_ptr<DiagnosticsWriter> diagnostics;
+  if (rank == 0) {
+    writer = std::make_unique<SnapshotWriter>(args.out);
+    std::ofstream f(args.out / "case_used.toml");
+    f << "# " << c.path().string() << " with the overrides of this run\n" << c.table() << "\n";
+    std::vector<std::string> columns{"time",
+                                     "step",
+                                     "wall_seconds",
+                                     "ppe_iterations",
+                                     "max_speed",
+                                     "dt",
+                                     "atoms",
+                                     "bed_height",
+                                     "max_grain_speed",
+                                     "min_porosity",
+                                     "floored_porosity",
+                                     "drag_total_up",
+                                     "fluid_resistance_up",
+                                     "dem_seconds",
+                                     "coupling_seconds",
+                                     "fluid_seconds"};
+    for (const auto& e : ErosionDiagnostics<Dim>::columns()) columns.push_back(e);
+    diagnostics = std::make_unique<DiagnosticsWriter>(args.out / "diagnostics.csv", columns);
+  }
+  auto snapshot = [&]() {
+    const DemState& state = backend.state();  // collective
+    if (rank != 0) return;
+    Snapshot s;
+    s.step = solver.steps();
+    s.time = solver.time();
+    add_fluid_group(P, s);
+    HydroLoads hydro;
+    const DemLoads& l = run.loads();
+    for (std::size_t k = 0; k < l.atom_tags.size(); ++k)
+      hydro.atom_force[l.atom_tags[k]] = l.atom_force[k];
+    for (std::size_t k = 0; k < l.body_ids.size(); ++k) {
+      hydro.body_force[l.body_ids[k]] = l.body_force[k];
+      hydro.body_torque[l.body_ids[k]] = l.body_torque[k];
+    }
+    add_dem_groups(state, hydro, s);
+    writer->write(s);
+  };
+  const double start = omp_get_wtime();
+  ProgressLine progress(settings.t_end, talk);
+  snapshot();
+  long ppe_total = 0;
+  auto after_step = [&](const isph::StepStats& st) {
+    ppe_total += st.ppe_iterations;
+    const long step = solver.steps();
+    if (step % settings.diagnostics_every == 0) {
+      const DemState& state = backend.state();  // collective
+      if (rank == 0) {
+        double vmax = 0.0, emin = 1.0;
+        for (const auto& a : state.atoms)
+          if (a.body == -1)
+            vmax = std::max(vmax, std::sqrt(a.v[0] * a.v[0] + a.v[1] * a.v[1] + a.v[2] * a.v[2]));
+        for (std::size_t i = 0; i < P.size(); ++i)
+          if (P.kind[i] != isph::kWall) emin = std::min(emin, P.porosity[i]);
+        double drag_up = 0.0, res_up = 0.0;
+        std::size_t floored = 0;
+        if (unresolved) {  // coupling.model = "resolved" has no porosity/drag stage
+          const auto& b = unresolved->balance();
+          floored = b.floored;
+          for (int a = 0; a < Dim; ++a) {
+            drag_up += (b.grain_drag[a] + b.grain_pressure[a]) * up[a];
+            res_up += b.fluid_resistance[a] * up[a];
+          }
+        }
+        const auto& t = run.timings();
+        std::vector<double> row{solver.time(),
+                                double(step),
+                                omp_get_wtime() - start,
+                                double(st.ppe_iterations),
+                                st.max_speed,
+                                st.dt,
+                                double(state.atoms.size()),
+                                bed_height(state, up),
+                                vmax,
+                                emin,
+                                double(floored),
+                                drag_up,
+                                res_up,
+                                t.dem,
+                                t.coupling,
+                                t.fluid};
+        for (double v : ErosionDiagnostics<Dim>::row(erosion.measure(state, P))) row.push_back(v);
+        diagnostics->row(row);
+      }
+    }
+    if (rank == 0) progress.update(solver.time(), step);
+  };
+  const bool finished =
+      run_to_end(run, settings, 1e-9, after_step, snapshot, progress, rank == 0, args.out);
+  backend.finalize();
+  if (!finished) return 1;
+  if (talk) {
+    const double wall = omp_get_wtime() - start;
+    const auto& t = run.timings();
+    std::printf(
+        "done: t = %g s in %ld fluid steps, %s wall, %.1f PPE iterations/step\n"
+        "  time per part: DEM substeps %.0f%%, coupling (mapping, drag) %.0f%%, ISPH %.0f%%\n",
+        solver.time(), solver.steps(), format_duration(wall).c_str(),
+        solver.steps() ? double(ppe_total) / solver.steps() : 0.0, 100 * t.dem / t.total(),
+        100 * t.coupling / t.total(), 100 * t.fluid / t.total());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int run_main(int argc, char** argv) {
+  Arguments args;
+  try {
+    args = parse_arguments(argc, argv);
+    const CaseFile c = CaseFile::load(args.case_file, args.overrides, case_keys());
+    const bool has_dem = c.has("dem"), has_fluid = c.has("fluid");
+    if (c.has("unresolved") && !(has_dem && has_fluid))
+      throw CaseError(
+          "[unresolved] couples a fluid with [dem] grains: the case needs both a "
+          "[fluid] and a [dem] table, or drop [unresolved]");
+    if (has_dem && has_fluid)
+      return case_dimension(c) == 2 ? run_coupled<2>(c, args) : run_coupled<3>(c, args);
+    if (has_dem) return run_dem_only(c, args);
+    return case_dimension(c) == 2 ? run_case<2>(c, args) : run_case<3>(c, args);
+  } catch (const CaseError& e) {
+    std::fprintf(stderr, "isphdem run: %s\n", e.what());
+    return 2;
+  } catch (const isph::SimulationError& e) {
+    std::fprintf(stderr, "isphdem run: %s\n", e.what());
+    return 2;
+  } catch (const std::runtime_error& e) {  // DEM backend: missing script, refused loads
+    std::fprintf(stderr, "isphdem run: %s\n", e.what());
+    return 2;
+  }
+}
+
+}  // namespace isphdem

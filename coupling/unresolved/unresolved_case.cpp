@@ -1,0 +1,56 @@
+#include "unresolved/unresolved_case.hpp"
+
+#include "case/coupling_table.hpp"
+
+namespace isphdem {
+
+std::vector<std::string> unresolved_keys() {
+  return {"unresolved.grain_diameter",
+          "unresolved.slab_thickness",
+          "unresolved.porosity_smoothing_length",
+          "unresolved.min_porosity",
+          "unresolved.drag",
+          "unresolved.alpha",
+          "unresolved.beta",
+          "unresolved.blend",
+          "unresolved.blend_half_width"};
+}
+
+template <int Dim>
+std::unique_ptr<UnresolvedCoupling<Dim>> make_unresolved_coupling(const CaseFile& c, double fluid_h,
+                                                                  double viscosity) {
+  UnresolvedSettings s;
+  s.map.smoothing_length = c.positive("unresolved.porosity_smoothing_length", fluid_h);
+  s.map.min_porosity = c.positive("unresolved.min_porosity", s.map.min_porosity);
+  if (s.map.min_porosity >= 1.0)
+    throw CaseError("'unresolved.min_porosity' must lie in (0, 1); 0.25 suits equal spheres");
+  if (Dim == 2) s.map.slab_thickness = slab_thickness(c);
+  s.clump_spheres = coupling_model(c) == "unresolved";
+  const std::string drag = c.string("unresolved.drag", "seed");
+  if (drag != "seed")
+    throw CaseError("'unresolved.drag' must be \"seed\" (Ergun / Wen-Yu; got \"" + drag + "\")");
+  SeedResistanceParameters p;
+  if (!c.has("unresolved.grain_diameter"))
+    throw CaseError(
+        "'unresolved.grain_diameter' is required: the fine grains' diameter d_s [m] "
+        "used by the drag law");
+  p.grain_diameter = c.positive("unresolved.grain_diameter");
+  p.kinematic_viscosity = viscosity;
+  p.alpha = c.positive("unresolved.alpha", p.alpha);
+  p.beta = c.positive("unresolved.beta", p.beta);
+  p.blend = c.boolean("unresolved.blend", p.blend);
+  p.blend_half_width = c.positive("unresolved.blend_half_width", p.blend_half_width);
+  try {
+    auto law = std::make_shared<SeedResistance>(p);
+    return std::make_unique<UnresolvedCoupling<Dim>>(s, law);
+  } catch (const std::invalid_argument& e) {
+    throw CaseError(std::string("[unresolved]: ") + e.what());
+  }
+}
+
+template std::unique_ptr<UnresolvedCoupling<2>> make_unresolved_coupling<2>(const CaseFile&, double,
+                                                                            double);
+template std::unique_ptr<UnresolvedCoupling<3>> make_unresolved_coupling<3>(const CaseFile&, double,
+                                                                            double);
+
+}  // namespace isphdem

@@ -1,0 +1,161 @@
+#include "unresolved/unresolved_coupling.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "unresolved/drag_distribution.hpp"
+
+namespace isphdem {
+
+namespace {
+
+bool mapped(int32_t kind) { return kind == isph::kFluid || kind == isph::kForcing; }
+
+}  // namespace
+
+template <int Dim>
+UnresolvedCoupling<Dim>::UnresolvedCoupling(const UnresolvedSettings& settings,
+                                            std::shared_ptr<const DragLaw> law)
+    : settings_(settings),
+      law_(std::move(law)),
+      map_(settings.map),
+      depth_(Dim == 2 ? settings.map.slab_thickness : 1.0) {
+  if (!law_) throw std::invalid_argument("unresolved coupling: no drag law");
+}
+
+template <int Dim>
+void UnresolvedCoupling<Dim>::initialize(const DemState& dem, isph::IsphSolver<Dim>& solver) {
+  const auto& d = solver.domain();
+  for (const auto& a : dem.atoms) {
+    if (!maps(a)) continue;
+    for (int k = 0; k < Dim; ++k)
+      if (!d.periodic[k] && (a.x[k] < d.lo[k] || a.x[k] > d.hi[k]))
+        throw std::runtime_error(
+            "unresolved coupling: grain " + std::to_string(a.tag) +
+            " lies outside the fluid domain (axis " + std::to_string(k) +
+            "): place the grains inside domain.min/domain.max (in 2D the fluid plane is x-y)");
+  }
+}
+
+template <int Dim>
+void UnresolvedCoupling<Dim>::before_fluid_step(const DemState& dem,
+                                                isph::IsphSolver<Dim>& solver) {
+  grains_.clear();
+  for (const auto& a : dem.atoms) {
+    if (!maps(a)) continue;
+    Grain<Dim> g;
+    g.tag = a.tag;
+    for (int k = 0; k < Dim; ++k) g.x[k] = a.x[k], g.v[k] = a.v[k];
+    g.radius = a.radius;
+    solver.domain().wrap(g.x);
+    grains_.push_back(g);
+  }
+  auto& P = solver.particles();
+  std::vector<isph::Vec<Dim>> x;
+  mapped_ids_.clear();
+  std::vector<std::size_t> rows;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (mapped(P.kind[i])) {
+      x.push_back(P.x[i]);
+      mapped_ids_.push_back(P.id[i]);
+      rows.push_back(i);
+    }
+  // The grain grid knows no periodic images: grains within the porosity support of a periodic
+  // face are mirrored across it. Images carry the tag of their grain, so their share of the
+  // drag goes to the real grain.
+  std::vector<Grain<Dim>> with_images = grains_;
+  owner_.resize(grains_.size());
+  for (std::size_t g = 0; g < owner_.size(); ++g) owner_[g] = g;
+  const auto& dom = solver.domain();
+  const double reach = map_.support();
+  for (int k = 0; k < Dim; ++k) {
+    if (!dom.periodic[k]) continue;
+    const double L = dom.hi[k] - dom.lo[k];
+    const std::size_t n = with_images.size();
+    for (std::size_t g = 0; g < n; ++g) {
+      Grain<Dim> im = with_images[g];
+      if (im.x[k] - dom.lo[k] < reach) {
+        im.x[k] += L;
+        with_images.push_back(im);
+        owner_.push_back(owner_[g]);
+      } else if (dom.hi[k] - im.x[k] < reach) {
+        im.x[k] -= L;
+        with_images.push_back(im);
+        owner_.push_back(owner_[g]);
+      }
+    }
+  }
+  grains_.swap(with_images);
+  field_ = map_.compute(x, grains_);
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const std::size_t i = rows[r];
+    const double eps = field_.porosity[r];
+    P.porosity[i] = eps;
+    P.solid_velocity[i] = eps < 1.0 ? field_.solid_velocity[r] : isph::Vec<Dim>::Zero();
+    const double vr = (P.v[i] / eps - P.solid_velocity[i]).norm();
+    P.resistance[i] = eps < 1.0 ? law_->coefficients(eps, vr).total(vr) : 0.0;
+  }
+}
+
+template <int Dim>
+void UnresolvedCoupling<Dim>::after_fluid_step(const DemState&, const isph::IsphSolver<Dim>& solver,
+                                               double, DemLoads& loads) {
+  const auto& P = solver.particles();
+  const double rho = solver.config().density;
+  // Particles were re-sorted inside the step; the map's rows follow the ids.
+  std::vector<int> index_of(static_cast<std::size_t>(P.next_id), -1);
+  for (std::size_t i = 0; i < P.size(); ++i) index_of[P.id[i]] = static_cast<int>(i);
+  const std::size_t rows = mapped_ids_.size();
+  std::vector<isph::Vec<Dim>> reaction(rows, isph::Vec<Dim>::Zero()), grad_p(rows);
+  balance_ = {};
+  for (std::size_t r = 0; r < rows; ++r) {
+    const int i = index_of[mapped_ids_[r]];
+    if (i < 0) throw std::logic_error("unresolved coupling: a mapped particle disappeared");
+    const double eps = P.porosity[i];
+    // The implicit resistance of the step with the same K, at the final v_D.
+    reaction[r] = eps * rho * P.volume * P.resistance[i] * (P.v[i] / eps - P.solid_velocity[i]);
+    balance_.fluid_resistance -= depth_ * reaction[r];
+    grad_p[r] = isph::gradient(solver.neighbors(), solver.operators(), P.p, i);
+  }
+  GrainLoads<Dim> gl = distribute_reactions(field_.weights, grains_, reaction, depth_);
+  // grad p at each grain: the kernel average of the particles' gradients over the same weights.
+  std::vector<isph::Vec<Dim>> grad_at(grains_.size(), isph::Vec<Dim>::Zero());
+  std::vector<double> wsum(grains_.size(), 0.0);
+  for (std::size_t r = 0; r < rows; ++r)
+    for (std::size_t e = field_.weights.offset[r]; e < field_.weights.offset[r + 1]; ++e) {
+      const std::size_t k = field_.weights.grain[e];
+      grad_at[k] += field_.weights.weight[e] * grad_p[r];
+      wsum[k] += field_.weights.weight[e];
+    }
+  // Images are summed into their grain (same tag) before the pressure force: the real grain and
+  // its images see one field from both sides of the periodic face.
+  for (std::size_t k = 0; k < grains_.size(); ++k) {
+    balance_.grain_drag += gl.force[k];
+    const std::size_t o = owner_[k];
+    if (o == k) continue;
+    gl.force[o] += gl.force[k];
+    grad_at[o] += grad_at[k];
+    wsum[o] += wsum[k];
+  }
+  balance_.grains = 0;
+  balance_.floored = field_.floored;
+  for (std::size_t k = 0; k < grains_.size(); ++k) {
+    if (owner_[k] != k) continue;
+    ++balance_.grains;
+    const isph::Vec<Dim> g =
+        wsum[k] > 0.0 ? isph::Vec<Dim>(grad_at[k] / wsum[k]) : isph::Vec<Dim>::Zero();
+    const isph::Vec<Dim> fp = pressure_gradient_force<Dim>(g, grains_[k].volume());
+    balance_.grain_pressure += fp;
+    const isph::Vec<Dim> f = gl.force[k] + fp;
+    loads.atom_tags.push_back(grains_[k].tag);
+    Vec3 f3{0.0, 0.0, 0.0};
+    for (int a = 0; a < Dim; ++a) f3[a] = f[a];
+    loads.atom_force.push_back(f3);
+    loads.atom_torque.push_back({0.0, 0.0, 0.0});
+  }
+}
+
+template class UnresolvedCoupling<2>;
+template class UnresolvedCoupling<3>;
+
+}  // namespace isphdem

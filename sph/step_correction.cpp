@@ -1,0 +1,89 @@
+// Stage 5 of a step: the corrector u = u* - dt/rho0 grad p (the pump's and PMS solids' rows
+// apart), then advection with the wall constraint.
+#include <algorithm>
+
+#include "isph_solver.hpp"
+#include "rigid_solids.hpp"
+
+namespace isph {
+
+namespace {
+
+// Closest approach of two fluid particles, in spacings (see separate_close_pairs).
+constexpr double kMinPairDistance = 0.5;
+
+}  // namespace
+
+template <int Dim>
+void IsphSolver<Dim>::correct(double dt) {
+  const int n = static_cast<int>(particles_.size());
+  auto& P = particles_;
+  const double rho0 = config_.density;
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    if (P.kind[i] == kWall) continue;
+    if (P.kind[i] == kForcing) {  // the pump: the zone velocity whatever the pressure
+      P.v[i] = zone_of(P.x[i])->velocity_at(time_ + dt);
+      continue;
+    }
+    if (P.kind[i] == kSolid) {  // PMS: the fluid's momentum change goes to the body
+      P.solid_force[i] = pms_force(P, nb_, op_, i, rho0, dt, u_star_[i], config_.gravity);
+      continue;
+    }
+    P.v[i] = u_star_[i] - dt * porous_.pressure_coefficient(i) / rho0 * gradient(nb_, op_, P.p, i);
+  }
+}
+
+template <int Dim>
+void IsphSolver<Dim>::advect(double dt, StepStats& stats) {
+  const int n = static_cast<int>(particles_.size());
+  auto& P = particles_;
+  if (config_.free_surface)
+    separate_close_pairs(P, nb_, domain_, dt, kMinPairDistance * P.spacing, shift_);
+  double vmax = 0.0;
+  for (int i = 0; i < n; ++i) {
+    if (P.kind[i] == kWall || P.kind[i] == kSolid) continue;  // solids: placed by their body
+    P.x[i] += dt * P.v[i] + shift_[i];
+    keep_off_walls(i);
+    domain_.wrap(P.x[i]);
+    vmax = std::max(vmax, P.v[i].norm());
+    stats.surface_particles += P.surface[i];
+    stats.fluid_volume += P.volume * (full_support_[i] ? n0_ / number_density_[i] : 1.0);
+  }
+  stats.max_speed = vmax;
+  stats.max_eddy_viscosity = max_eddy_viscosity_;
+}
+
+template <int Dim>
+void IsphSolver<Dim>::keep_off_walls(int i) {
+  // Nothing in the pressure equation reacts to a position error, so a particle driven fast along
+  // a wall (the toe of a dam break) can creep into it and then blow up among the wall
+  // particles. Walls with known geometry therefore act as a kinematic constraint: a fluid
+  // particle closer than `min_wall_distance` to the wall surface of a neighbouring wall particle
+  // is put back at that distance and loses its velocity into the wall.
+  auto& P = particles_;
+  const double min_dist = config_.min_wall_distance * P.spacing;
+  for (int k = nb_.begin(i); k < nb_.end(i); ++k) {
+    const int w = nb_.index[k];
+    if (P.kind[w] != kWall || P.normal[w].squaredNorm() == 0.0) continue;
+    const Vec<Dim>& nrm = P.normal[w];
+    // Only walls whose surface patch is beside the particle (not a neighbouring face at a corner).
+    const Vec<Dim> d = domain_.min_image(P.x[i] - P.x[w]);
+    const Vec<Dim> tangential = d - d.dot(nrm) * nrm;
+    if (tangential.norm() > 0.5 * P.spacing) continue;
+    const double gap = d.dot(nrm) - P.wall_distance[w];
+    if (gap >= min_dist) continue;
+    P.x[i] += (min_dist - gap) * nrm;
+    const double vn = P.v[i].dot(nrm) - P.v[w].dot(nrm);
+    if (vn < 0.0) P.v[i] -= vn * nrm;
+  }
+}
+
+template void IsphSolver<2>::correct(double);
+template void IsphSolver<2>::advect(double, StepStats&);
+template void IsphSolver<2>::keep_off_walls(int);
+template void IsphSolver<3>::correct(double);
+template void IsphSolver<3>::advect(double, StepStats&);
+template void IsphSolver<3>::keep_off_walls(int);
+
+}  // namespace isph

@@ -1,0 +1,38 @@
+// Stage 1 of a step: sort, neighbour lists with the pair geometry (r_ij, W, grad W), and the
+// corrected operator weights that every later stage reuses.
+#include "isph_solver.hpp"
+#include "stopwatch.hpp"
+
+namespace isph {
+
+template <int Dim>
+void IsphSolver<Dim>::find_neighbors() {
+  Stopwatch w(timings_.neighbors);
+  const std::vector<int> perm = search_.sort(particles_);
+  if (unit_response_.size() == static_cast<Eigen::Index>(perm.size())) {
+    Eigen::VectorXd q(unit_response_.size());
+    for (std::size_t k = 0; k < perm.size(); ++k) q[k] = unit_response_[perm[k]];
+    unit_response_.swap(q);
+  }
+  search_.build(particles_, kernel_, nb_);
+}
+
+template <int Dim>
+void IsphSolver<Dim>::compute_operator_weights() {
+  const int n = static_cast<int>(particles_.size());
+  // Walls need no operators; free-surface particles get the robust first-order forms (a
+  // one-sided quadratic fit extrapolates). Their neighbours keep the quadratic fit: the Brookshaw
+  // Laplacian is not exact for a linear (hydrostatic) field on a truncated support, and still
+  // water drifted and blew up after 6000 steps with it.
+  operator_mode_.resize(n);
+  for (int i = 0; i < n; ++i)
+    operator_mode_[i] = particles_.kind[i] == kWall ? 0 : (particles_.surface[i] ? 1 : 2);
+  compute_operators(nb_, kernel_.h(), particles_.volume, operator_mode_, op_);
+}
+
+template void IsphSolver<2>::find_neighbors();
+template void IsphSolver<2>::compute_operator_weights();
+template void IsphSolver<3>::find_neighbors();
+template void IsphSolver<3>::compute_operator_weights();
+
+}  // namespace isph
