@@ -47,6 +47,7 @@ int dem_main(int argc, char** argv) {
     throw std::runtime_error("cannot open input script '" + script + "': no such readable file");
 
   auto lmp = open_liggghts(args, MPI_COMM_WORLD);
+  set_liggghts_context(lmp, "script " + script);
   lmp->input->file();  // reads the -in script, as the stock launcher does
   return 0;
 }

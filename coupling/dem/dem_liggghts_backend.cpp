@@ -102,8 +102,11 @@ void LiggghtsBackend::initialize(const DemSetup& setup) {
     throw std::runtime_error("cannot open DEM input script '" + setup.script.string() +
                              "': no such readable file");
   lmp_ = open_liggghts(args_, comm_);
+  set_liggghts_context(lmp_, "script " + setup.script.string());
   if (!setup.script.empty()) lmp_->input->file(setup.script.string().c_str());
+  set_liggghts_context(lmp_, "a command isphdem gave after the script");
   for (const auto& c : setup.commands) command(c);
+  set_liggghts_context(lmp_, "the DEM substeps of a fluid step");
   state_.time = 0.0;
   state_stale_ = true;
 }

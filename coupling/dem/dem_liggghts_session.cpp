@@ -5,7 +5,11 @@
 
 namespace isphdem {
 
-void LammpsCloser::operator()(LAMMPS_NS::LAMMPS* lmp) const { delete lmp; }
+void LammpsCloser::operator()(LAMMPS_NS::LAMMPS* lmp) const {
+  if (tee) tee->host_closing();
+  delete lmp;
+  if (tee) tee->close();
+}
 
 LammpsHandle open_liggghts(const std::vector<std::string>& args, MPI_Comm comm) {
   std::vector<std::string> storage;
@@ -15,9 +19,16 @@ LammpsHandle open_liggghts(const std::vector<std::string>& args, MPI_Comm comm) 
   std::vector<char*> argv;
   for (auto& s : storage) argv.push_back(s.data());
   argv.push_back(nullptr);
-  LammpsHandle lmp(new LAMMPS_NS::LAMMPS(static_cast<int>(storage.size()), argv.data(), comm));
-  register_couple_isph(lmp.get());
-  return lmp;
+  auto* lmp = new LAMMPS_NS::LAMMPS(static_cast<int>(storage.size()), argv.data(), comm);
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  LammpsHandle handle(lmp, LammpsCloser{std::make_shared<LiggghtsOutputTee>(lmp, rank)});
+  register_couple_isph(lmp);
+  return handle;
+}
+
+void set_liggghts_context(LammpsHandle& lmp, std::string where) {
+  if (lmp.get_deleter().tee) lmp.get_deleter().tee->set_context(std::move(where));
 }
 
 }  // namespace isphdem

@@ -1,5 +1,6 @@
 // Starting Debian's LIGGGHTS as a library with `fix couple/isph` available, shared by
-// `isphdem dem` and LiggghtsBackend so both start LIGGGHTS exactly the same way.
+// `isphdem dem` and LiggghtsBackend so both start LIGGGHTS exactly the same way: the screen and
+// log pass through a LiggghtsOutputTee, so LIGGGHTS's errors reach stderr with a hint.
 #ifndef ISPHDEM_DEM_LIGGGHTS_SESSION_HPP
 #define ISPHDEM_DEM_LIGGGHTS_SESSION_HPP
 
@@ -9,21 +10,29 @@
 #include <string>
 #include <vector>
 
+#include "dem/liggghts_output_tee.hpp"
+
 namespace LAMMPS_NS {
 class LAMMPS;
 }
 
 namespace isphdem {
 
+// Deletes LAMMPS, then closes the streams it wrote to.
 struct LammpsCloser {
+  std::shared_ptr<LiggghtsOutputTee> tee;
   void operator()(LAMMPS_NS::LAMMPS* lmp) const;
 };
 using LammpsHandle = std::unique_ptr<LAMMPS_NS::LAMMPS, LammpsCloser>;
 
 // args: liggghts command-line options without the program name (-in, -var, -log, -screen,
 // -echo, ...), handed to LAMMPS's constructor as the stock launcher does. MPI must be
-// initialised. LIGGGHTS errors in the input end the process (LIGGGHTS calls exit(1)).
+// initialised. A LIGGGHTS error in the input ends the process (LIGGGHTS calls exit(1) or
+// MPI_Abort); its message is on stderr first (liggghts_output_tee.hpp).
 LammpsHandle open_liggghts(const std::vector<std::string>& args, MPI_Comm comm);
+
+// Where the next LIGGGHTS commands come from, named in an error message ("script in.liggghts").
+void set_liggghts_context(LammpsHandle& lmp, std::string where);
 
 }  // namespace isphdem
 

@@ -3,8 +3,10 @@
 #include <omp.h>
 
 #include <stdexcept>
+#include <string>
 
 #include "dem/dem_case_config.hpp"
+#include "format_number.hpp"
 #include "stopwatch.hpp"
 
 namespace isphdem {
@@ -50,6 +52,7 @@ isph::StepStats CoupledRun<Dim>::advance() {
   {
     Stopwatch w(timings_.coupling);
     const DemState& state = backend_.state();
+    atoms_before_ = state.atoms;
     for (auto& s : stages_) s->before_fluid_step(state, solver);
   }
   {
@@ -66,7 +69,40 @@ isph::StepStats CoupledRun<Dim>::advance() {
   backend_.set_atom_loads(loads_.atom_tags, loads_.atom_force, loads_.atom_torque);
   backend_.set_body_loads(loads_.body_ids, loads_.body_force, loads_.body_torque);
   backend_.advance(substeps_);
+  check_no_grain_lost(backend_.state());
   return stats;
+}
+
+template <int Dim>
+void CoupledRun<Dim>::check_no_grain_lost(const DemState& now) const {
+  if (now.atoms.size() >= atoms_before_.size()) return;  // grains may be inserted, not lost
+  // Both lists are sorted by tag: the first tag of before that now lacks is a lost grain.
+  std::size_t k = 0;
+  const DemAtom* lost = nullptr;
+  for (const DemAtom& a : atoms_before_) {
+    while (k < now.atoms.size() && now.atoms[k].tag < a.tag) ++k;
+    if (k == now.atoms.size() || now.atoms[k].tag != a.tag) {
+      lost = &a;
+      break;
+    }
+  }
+  auto vec = [](const Vec3& v) { return isph::format_vector(v); };
+  const double t1 = fluid_.solver().time(), t0 = t1 - dt_;
+  const std::size_t n = atoms_before_.size() - now.atoms.size();
+  std::string what = n == 1 ? "a grain" : std::to_string(n) + " grains";
+  std::string where;
+  if (lost) {
+    what = n == 1 ? "grain " + std::to_string(lost->tag)
+                  : what + " (among them grain " + std::to_string(lost->tag) + ")";
+    where = " (last seen at " + vec(lost->x) + " m, moving at " + vec(lost->v) + " m/s)";
+  }
+  throw isph::SimulationError(
+      what + " left the DEM simulation between t = " + isph::format_number(t0, 6) + " and " +
+      isph::format_number(t1, 6) + " s" + where +
+      ": LIGGGHTS drops a grain that crosses a fixed (f) boundary of its box without an error. "
+      "Enlarge the box (region/create_box in the DEM script) or close it with walls, and check "
+      "what drove the grain there (a fluid time step too large for the drag, a wrong initial "
+      "velocity)");
 }
 
 template <int Dim>

@@ -28,7 +28,9 @@ class CoupledRun {
   CoupledRun(FluidScene<Dim> scene, const RunSettings& settings, DemBackend& backend, int substeps,
              std::vector<std::unique_ptr<CouplingStage<Dim>>> stages);
 
-  // One fluid step of dt with the exchange before and after, then `substeps` DEM steps.
+  // One fluid step of dt with the exchange before and after, then `substeps` DEM steps. Throws
+  // isph::SimulationError when a grain has gone from the DEM in those substeps: LIGGGHTS drops a
+  // grain that crosses a fixed boundary without a word (thermo_modify lost defaults to ignore).
   isph::StepStats advance();
   // Steps until time t is reached (the fixed dt; the last step may pass t by less than dt).
   void run_until(double t, const std::function<void(const isph::StepStats&)>& after_step = {});
@@ -49,8 +51,11 @@ class CoupledRun {
   int substeps_;
   double dt_;
   std::vector<std::unique_ptr<CouplingStage<Dim>>> stages_;
+  void check_no_grain_lost(const DemState& now) const;
+
   DemLoads loads_;
   CoupledTimings timings_;
+  std::vector<DemAtom> atoms_before_;  // the grains at the start of the step, by tag
 };
 
 }  // namespace isphdem

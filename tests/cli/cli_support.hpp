@@ -15,9 +15,9 @@ struct Result {
   std::string output;  // stdout and stderr together
 };
 
-inline Result run(const std::string& args) {
-  const std::string cmd =
-      std::string(ISPHDEM_BINARY_DIR) + "/coupling/isphdem run " + args + " 2>&1";
+// Runs a whole shell command line (stdout and stderr captured together).
+inline Result run_shell(const std::string& command_line) {
+  const std::string cmd = command_line + " 2>&1";
   Result r;
   FILE* p = popen(cmd.c_str(), "r");
   std::array<char, 4096> buf;
@@ -26,6 +26,10 @@ inline Result run(const std::string& args) {
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
 }
+
+inline std::string isphdem() { return std::string(ISPHDEM_BINARY_DIR) + "/coupling/isphdem"; }
+
+inline Result run(const std::string& args) { return run_shell(isphdem() + " run " + args); }
 
 // A fresh scratch directory per test.
 inline std::filesystem::path scratch(const std::string& name) {
