@@ -27,6 +27,13 @@ inline Result run_shell(const std::string& command_line) {
   return r;
 }
 
+// How often `what` occurs in `text` (a message shown once, say).
+inline int count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
 inline std::string isphdem() { return std::string(ISPHDEM_BINARY_DIR) + "/coupling/isphdem"; }
 
 inline Result run(const std::string& args) { return run_shell(isphdem() + " run " + args); }

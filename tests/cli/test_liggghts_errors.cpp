@@ -42,12 +42,6 @@ fs::path broken_example(const std::string& test, const std::string& name, const 
   return dir;
 }
 
-int count(const std::string& text, const std::string& what) {
-  int n = 0;
-  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
-
 // The screen file holds printable text only, and its last line is LIGGGHTS's ERROR line.
 void expect_clean_screen(const fs::path& screen, const std::string& error) {
   const std::string text = read(screen);

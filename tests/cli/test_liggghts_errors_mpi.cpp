@@ -21,12 +21,6 @@ Result mpirun_dem(const std::string& script_args) {
   return r;
 }
 
-int count(const std::string& text, const std::string& what) {
-  int n = 0;
-  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
-
 TEST(LiggghtsErrorsMpi, OneRankFailingIsShownOnceWithItsRank) {
   const Result r = mpirun_dem("");
   EXPECT_NE(r.exit_code, 0);
