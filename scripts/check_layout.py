@@ -21,6 +21,7 @@ import tempfile
 # Who may include whom. Tests, bench/ and examples/ are not rooms: they may include anything.
 ALLOWED = {
     "sph": set(),  # the ISPH library: no coupling, no LIGGGHTS, no MPI
+    "sph_petsc": {"sph", "PETSc", "MPI"},  # the PPE on PETSc + hypre, registered with sph/
     "liggghts_fix": {"LIGGGHTS", "MPI"},
     "coupling": {"sph"},  # the seam: DemState and the CouplingStage interface
     "case": {"sph"},
@@ -28,7 +29,7 @@ ALLOWED = {
     "dem": {"coupling", "liggghts_fix", "LIGGGHTS", "MPI", "sph"},
     "unresolved": {"coupling", "case", "sph"},
     "resolved": {"coupling", "case", "sph"},
-    "run": {"case", "io", "dem", "unresolved", "resolved", "coupling", "sph", "MPI"},
+    "run": {"case", "io", "dem", "unresolved", "resolved", "coupling", "sph", "sph_petsc", "MPI"},
 }
 COUPLING_ROOMS = ["case", "io", "dem", "unresolved", "resolved", "run"]
 SOURCE = (".cpp", ".hpp", ".h")
@@ -46,7 +47,7 @@ def room_of(root, path):
 
 
 def sources(root):
-    for top in ("sph", "liggghts_fix", "coupling"):
+    for top in ("sph", "sph_petsc", "liggghts_fix", "coupling"):
         for d, _, files in os.walk(os.path.join(root, top)):
             for f in sorted(files):
                 if f.endswith(SOURCE):
@@ -58,12 +59,14 @@ def resolve(root, path, bracket, name, liggghts_headers):
     if bracket == "<":
         if name == "mpi.h":
             return "MPI"
+        if name.startswith("petsc"):
+            return "PETSc"
         return "LIGGGHTS" if name in liggghts_headers else None
     first = name.split("/")[0]
     if first in COUPLING_ROOMS and os.path.exists(os.path.join(root, "coupling", name)):
         return first
-    for d in (os.path.dirname(path), os.path.join(root, "sph"), os.path.join(root, "coupling"),
-              os.path.join(root, "liggghts_fix")):
+    for d in (os.path.dirname(path), os.path.join(root, "sph"), os.path.join(root, "sph_petsc"),
+              os.path.join(root, "coupling"), os.path.join(root, "liggghts_fix")):
         candidate = os.path.join(d, name)
         if os.path.exists(candidate):
             return room_of(root, candidate)
@@ -107,7 +110,8 @@ def scan(root, liggghts_include):
 def graph(edges):
     def node(r):
         return {"coupling": "seam[coupling/ root: DemState, CouplingStage]",
-                "LIGGGHTS": "LIGGGHTS([LIGGGHTS 3.8])", "MPI": "MPI([MPI])"}.get(r, f"{r}[{r}/]")
+                "LIGGGHTS": "LIGGGHTS([LIGGGHTS 3.8])", "MPI": "MPI([MPI])",
+                "PETSc": "PETSc([PETSc + hypre])"}.get(r, f"{r}[{r}/]")
 
     lines = ["```mermaid", "flowchart LR"]
     named = set()
@@ -136,6 +140,7 @@ def self_test():
         "sph/bad_room.hpp": ('#include "case/case_file.hpp"\n', "sph/ includes case/case_file.hpp"),
         "sph/bad_liggghts.hpp": ('#include "lammps.h"\n', "sph/ includes lammps.h (LIGGGHTS)"),
         "sph/bad_mpi.hpp": ("#include <mpi.h>\n", "sph/ includes mpi.h (MPI)"),
+        "sph/bad_petsc.hpp": ("#include <petscksp.h>\n", "sph/ includes petscksp.h (PETSc)"),
         "coupling/unresolved/bad.cpp": ('#include "resolved/pms.hpp"\n',
                                         "unresolved/ includes resolved/pms.hpp"),
         "coupling/resolved/bad.cpp": ('#include "unresolved/drag.hpp"\n',

@@ -7,7 +7,9 @@ PACKAGES=(
   liggghts libliggghts-dev          # LIGGGHTS 3.8.0 (pulls ParaView as a recommended package: keep it)
   libeigen3-dev
   libopenmpi-dev openmpi-bin
-  libhdf5-dev
+  libhdf5-openmpi-dev               # the HDF5 PETSc links (never mix it with the serial one)
+  petsc-dev                         # PETSc 3.18 with hypre: solver.preconditioner = "amg"
+  pkg-config
   libgtest-dev libgmock-dev
   libtomlplusplus-dev
   python3-h5py python3-matplotlib python3-pil   # plots (PIL: GIFs), run with /usr/bin/python3

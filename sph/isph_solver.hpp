@@ -99,6 +99,7 @@ class SimulationError : public std::runtime_error {
 
 struct StepTimings {
   double neighbors = 0, operators = 0, assembly = 0, solve = 0, rest = 0;
+  double solve_setup = 0;  // the preconditioner setup inside `solve` (not a part of its own)
   double total() const { return neighbors + operators + assembly + solve + rest; }
 };
 
@@ -106,6 +107,7 @@ struct StepStats {
   double dt = 0.0;
   int ppe_iterations = 0;
   double ppe_residual = 0.0;
+  double ppe_setup_seconds = 0.0;  // preconditioner setup (AMG hierarchy) in this step
   double max_speed = 0.0;
   std::size_t surface_particles = 0;
   // Fluid volume (2D: area) from the number density, sum V0 n0/n_i over fluid with full support

@@ -1,7 +1,9 @@
 #pragma once
 // The pressure equation is non-symmetric (corrected Laplacian, wall extrapolation rows), so the
-// default is BiCGSTAB. The interface lets a distributed backend (PETSc, hypre) replace it later.
+// default is BiCGSTAB. Backends that need MPI (PETSc + hypre AMG, sph_petsc/) live outside sph/
+// and register a factory under their preconditioner name; sph/ itself never sees MPI.
 #include <Eigen/Sparse>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -15,6 +17,11 @@ struct SolveStats {
   // right-hand side that is zero up to round-off (a flow already divergence-free) solvable.
   double residual = 0.0;
   bool converged = false;
+  double setup_seconds = 0.0;  // preconditioner setup (AMG hierarchy, factorisation) in this call
+  // Why the backend stopped when it did not converge (PETSc's KSPConvergedReason), else empty.
+  std::string reason;
+  // The backend met NaN or infinity: stop the run whatever the residual says.
+  bool broke_down = false;
 };
 
 struct LinearSolverConfig {
@@ -24,6 +31,12 @@ struct LinearSolverConfig {
   std::string preconditioner = "jacobi";
   double tolerance = 1e-8;
   int max_iterations = 2000;
+  // For a registered backend: its own options, passed as they are ([solver.petsc] options).
+  std::string backend_options;
+  // How many solves may reuse one preconditioner setup while the size stays the same; it is
+  // rebuilt earlier once the iterations grow past 1.5x those right after the last setup.
+  // 1: a new setup every solve. Used by the AMG backend, where the setup is the costly part.
+  int setup_reuse = 1;
 };
 
 class LinearSolver {
@@ -35,6 +48,15 @@ class LinearSolver {
                            double reference = 0.0) = 0;
 };
 
+using LinearSolverFactory = std::function<std::unique_ptr<LinearSolver>(const LinearSolverConfig&)>;
+
+// The built-in preconditioners (jacobi, ilu0, ilut) and any registered one, by
+// config.preconditioner.
 std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverConfig& config);
+
+// Makes `preconditioner` available to make_linear_solver (replacing an earlier registration); an
+// empty factory removes it again, e.g. once the library behind it is finalised.
+void register_linear_solver(const std::string& preconditioner, LinearSolverFactory factory);
+bool linear_solver_available(const std::string& preconditioner);
 
 }  // namespace isph

@@ -42,6 +42,8 @@ std::vector<std::string> fluid_scene_keys() {
           "solver.shifting_max",
           "solver.pressure_tolerance",
           "solver.preconditioner",
+          "solver.petsc.options",
+          "solver.petsc.setup_reuse",
           "solver.max_iterations",
           "solver.surface_detection",
           "solver.surface_divergence",
@@ -301,8 +303,16 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
       c.string("solver.preconditioner", cfg.pressure_solver.preconditioner);
   if (cfg.pressure_solver.preconditioner != "ilut" &&
       cfg.pressure_solver.preconditioner != "ilu0" &&
-      cfg.pressure_solver.preconditioner != "jacobi")
-    throw CaseError("'solver.preconditioner' must be \"jacobi\", \"ilu0\" or \"ilut\"");
+      cfg.pressure_solver.preconditioner != "jacobi" && cfg.pressure_solver.preconditioner != "amg")
+    throw CaseError("'solver.preconditioner' must be \"amg\", \"jacobi\", \"ilu0\" or \"ilut\"");
+  // PETSc's own option syntax, handed over as it is ("-ksp_type gmres -ksp_monitor").
+  cfg.pressure_solver.backend_options =
+      c.string("solver.petsc.options", cfg.pressure_solver.backend_options);
+  cfg.pressure_solver.setup_reuse =
+      static_cast<int>(c.integer("solver.petsc.setup_reuse", cfg.pressure_solver.setup_reuse));
+  if (cfg.pressure_solver.setup_reuse < 1)
+    throw CaseError("'solver.petsc.setup_reuse' (" + c.where("solver.petsc.setup_reuse") +
+                    ") must be at least 1 (1: a new AMG setup every solve)");
   cfg.pressure_solver.max_iterations =
       static_cast<int>(c.integer("solver.max_iterations", cfg.pressure_solver.max_iterations));
   return s;

@@ -3,7 +3,9 @@
 //   isphdem dem SCRIPT [liggghts options]                   plain LIGGGHTS script, fix couple/isph
 //   available
 // MPI is initialised here once for every subcommand (LIGGGHTS needs it; fluid-only runs are a
-// singleton job), so subcommands must neither initialise nor finalise it.
+// singleton job), so subcommands must neither initialise nor finalise it. PETSc likewise
+// (solver.preconditioner = "amg"), inside MPI: started after MPI_Init, finalised before
+// MPI_Finalize, so that -log_view and the unused-option warnings come at the end of every run.
 #include <mpi.h>
 
 #include <cstdio>
@@ -12,6 +14,7 @@
 #include <string>
 
 #include "dem/dem_command.hpp"
+#include "petsc_session.hpp"
 #include "run/run_command.hpp"
 
 namespace {
@@ -35,29 +38,34 @@ void print_usage(std::FILE* to) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  int provided = 0;
-  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+static int run_subcommand(int argc, char** argv) {
   int rc = 2;
   if (argc < 2 || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "--help")) {
     print_usage(argc < 2 ? stderr : stdout);
-    rc = argc < 2 ? 2 : 0;
-  } else {
-    const Subcommand* found = nullptr;
-    for (const auto& s : kSubcommands)
-      if (std::string(argv[1]) == s.name) found = &s;
-    if (!found) {
-      std::fprintf(stderr, "isphdem: unknown subcommand '%s'\n", argv[1]);
-      print_usage(stderr);
-    } else {
-      try {
-        rc = found->main(argc - 1, argv + 1);
-      } catch (const std::exception& e) {
-        std::fprintf(stderr, "isphdem %s: error: %s\n", found->name, e.what());
-        rc = 1;
-      }
-    }
+    return argc < 2 ? 2 : 0;
   }
+  const Subcommand* found = nullptr;
+  for (const auto& s : kSubcommands)
+    if (std::string(argv[1]) == s.name) found = &s;
+  if (!found) {
+    std::fprintf(stderr, "isphdem: unknown subcommand '%s'\n", argv[1]);
+    print_usage(stderr);
+    return rc;
+  }
+  try {
+    isph::PetscSession petsc;
+    rc = found->main(argc - 1, argv + 1);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "isphdem %s: error: %s\n", found->name, e.what());
+    rc = 1;
+  }
+  return rc;
+}
+
+int main(int argc, char** argv) {
+  int provided = 0;
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  const int rc = run_subcommand(argc, argv);
   MPI_Finalize();
   return rc;
 }

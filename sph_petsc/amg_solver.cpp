@@ -1,0 +1,193 @@
+#include "amg_solver.hpp"
+
+#include <petscksp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+#include "petsc_error.hpp"
+
+namespace isph {
+
+namespace {
+
+static_assert(sizeof(PetscInt) == sizeof(SparseMatrix::StorageIndex),
+              "PETSc's index type must match Eigen's to copy the CSR arrays");
+static_assert(sizeof(PetscScalar) == sizeof(double), "PETSc must be built with real doubles");
+
+int created = 0;
+
+// The case file's options first, then PETSC_OPTIONS again: the environment wins, as PETSc's
+// command line wins over an options file.
+void insert_options(const std::string& from_case) {
+  if (!from_case.empty())
+    check_petsc(PetscOptionsInsertString(nullptr, from_case.c_str()),
+                "reading [solver.petsc] options");
+  if (const char* env = std::getenv("PETSC_OPTIONS"))
+    check_petsc(PetscOptionsInsertString(nullptr, env), "reading PETSC_OPTIONS");
+  // -log_view only collects events when logging started; PetscInitialize saw PETSC_OPTIONS but
+  // not the case file.
+  PetscBool log_view = PETSC_FALSE;
+  PetscOptionsHasName(nullptr, nullptr, "-log_view", &log_view);
+  if (log_view) PetscLogDefaultBegin();
+}
+
+class AmgSolver : public LinearSolver {
+ public:
+  explicit AmgSolver(const LinearSolverConfig& c) : config_(c) {
+    insert_options(c.backend_options);
+    check_petsc(KSPCreate(PETSC_COMM_SELF, &ksp_), "creating the PPE solver");
+    check_petsc(KSPSetType(ksp_, KSPBCGS), "setting BiCGSTAB");
+    PC pc = nullptr;
+    check_petsc(KSPGetPC(ksp_, &pc), "getting the preconditioner");
+    check_petsc(PCSetType(pc, PCHYPRE), "setting PCHYPRE (is PETSc built with hypre?)");
+    check_petsc(PCHYPRESetType(pc, "boomeramg"), "choosing BoomerAMG");
+    check_petsc(KSPSetPCSide(ksp_, PC_RIGHT), "setting right preconditioning");
+    check_petsc(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "setting the residual norm");
+    check_petsc(KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE), "keeping the initial guess");
+    check_petsc(KSPSetFromOptions(ksp_), "applying the PETSc options");
+    ++created;
+  }
+
+  ~AmgSolver() override {
+    KSPDestroy(&ksp_);
+    MatDestroy(&mat_);
+  }
+
+  SolveStats solve(const SparseMatrix& A_in, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                   double reference) override {
+    SolveStats s;
+    const double scale = std::max(b.norm(), reference);
+    if (scale == 0.0) {
+      x.setZero();
+      s.converged = true;
+      return s;
+    }
+    SparseMatrix compressed;
+    const SparseMatrix* A = &A_in;
+    if (!A_in.isCompressed()) {
+      compressed = A_in;
+      compressed.makeCompressed();
+      A = &compressed;
+    }
+    const int n = static_cast<int>(A->rows());
+    const bool resized = n != size_;
+    load_matrix(*A);
+    // The rows as BoomerAMG expects them, diagonal positive (see row_sign_).
+    signed_b_ = b.cwiseProduct(row_sign_);
+
+    const bool rebuild = resized || solves_since_setup_ >= std::max(config_.setup_reuse, 1) ||
+                         last_iterations_ > 1.5 * iterations_after_setup_ + 2;
+    check_petsc(KSPSetOperators(ksp_, mat_, mat_), "giving the matrix to the solver");
+    check_petsc(KSPSetReusePreconditioner(ksp_, rebuild ? PETSC_FALSE : PETSC_TRUE),
+                "keeping the AMG hierarchy");
+    // The test is the Eigen path's, |b - A x| <= tol max(|b|, reference), as an absolute
+    // tolerance. No divergence test: the warm start (last step's pressure) can leave a residual
+    // far above |b| when b is small, and PETSc's default would call that diverged.
+    check_petsc(
+        KSPSetTolerances(ksp_, 0.0, config_.tolerance * scale, 1e300, config_.max_iterations),
+        "setting the tolerance");
+    const auto t0 = std::chrono::steady_clock::now();
+    check_petsc(KSPSetUp(ksp_), "setting up BoomerAMG");
+    if (rebuild)
+      s.setup_seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    Vec bv = nullptr, xv = nullptr;
+    check_petsc(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n, signed_b_.data(), &bv), "wrapping b");
+    check_petsc(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n, x.data(), &xv), "wrapping x");
+    const PetscErrorCode solved = KSPSolve(ksp_, bv, xv);
+    VecDestroy(&bv);
+    VecDestroy(&xv);
+    check_petsc(solved, "solving the PPE");
+
+    PetscInt its = 0;
+    KSPGetIterationNumber(ksp_, &its);
+    KSPConvergedReason why = KSP_CONVERGED_ITERATING;
+    KSPGetConvergedReason(ksp_, &why);
+    s.iterations = static_cast<int>(its);
+    s.residual = (b - *A * x).norm() / scale;
+    s.converged = why > 0 && s.residual <= config_.tolerance * (1.0 + 1e-6);
+    if (why < 0) s.reason = std::string("PETSc: ") + KSPConvergedReasons[why];
+    // Running out of iterations or a Krylov breakdown may still leave a usable pressure (GMRES
+    // "broke down" at 5e-6 in the dam break): the caller decides by the residual. NaN cannot.
+    s.broke_down = why == KSP_DIVERGED_NANORINF;
+
+    last_iterations_ = s.iterations;
+    if (rebuild) {
+      iterations_after_setup_ = s.iterations;
+      solves_since_setup_ = 1;
+    } else {
+      ++solves_since_setup_;
+    }
+    return s;
+  }
+
+ private:
+  // Values in place while the pattern is the one the Mat holds, else a new Mat. Rows whose
+  // diagonal is negative (the Laplacian rows; wall and Dirichlet rows have +1) enter negated:
+  // the solution and |b - A x| stay the same, and AMG's strength of connection and its smoother
+  // see one sign convention. With the mixed signs the 2D dam break stalled in the PPE.
+  void load_matrix(const SparseMatrix& A) {
+    const int n = static_cast<int>(A.rows());
+    const int nnz = static_cast<int>(A.nonZeros());
+    row_sign_.resize(n);
+    signed_values_.resize(nnz);
+    const int* outer = A.outerIndexPtr();
+    const int* inner = A.innerIndexPtr();
+    const double* v = A.valuePtr();
+    for (int i = 0; i < n; ++i) {
+      double diagonal = 0.0;
+      for (int k = outer[i]; k < outer[i + 1]; ++k)
+        if (inner[k] == i) diagonal = v[k];
+      row_sign_[i] = diagonal < 0.0 ? -1.0 : 1.0;
+      for (int k = outer[i]; k < outer[i + 1]; ++k) signed_values_[k] = row_sign_[i] * v[k];
+    }
+    const bool same_pattern =
+        mat_ && n == size_ && nnz == static_cast<int>(columns_.size()) &&
+        std::equal(A.outerIndexPtr(), A.outerIndexPtr() + n + 1, rows_.begin()) &&
+        std::equal(A.innerIndexPtr(), A.innerIndexPtr() + nnz, columns_.begin());
+    if (same_pattern) {
+      PetscScalar* values = nullptr;
+      check_petsc(MatSeqAIJGetArray(mat_, &values), "updating the matrix");
+      std::memcpy(values, signed_values_.data(), sizeof(double) * nnz);
+      check_petsc(MatSeqAIJRestoreArray(mat_, &values), "updating the matrix");
+      return;
+    }
+    MatDestroy(&mat_);
+    rows_.assign(A.outerIndexPtr(), A.outerIndexPtr() + n + 1);
+    columns_.assign(A.innerIndexPtr(), A.innerIndexPtr() + nnz);
+    check_petsc(MatCreate(PETSC_COMM_SELF, &mat_), "creating the matrix");
+    check_petsc(MatSetSizes(mat_, n, n, n, n), "sizing the matrix");
+    check_petsc(MatSetType(mat_, MATSEQAIJ), "choosing AIJ storage");
+    // Preallocated and filled from the CSR arrays in one go (row lengths = neighbour counts).
+    check_petsc(
+        MatSeqAIJSetPreallocationCSR(mat_, rows_.data(), columns_.data(), signed_values_.data()),
+        "filling the matrix");
+    size_ = n;
+  }
+
+  LinearSolverConfig config_;
+  KSP ksp_ = nullptr;
+  Mat mat_ = nullptr;
+  int size_ = -1;
+  std::vector<PetscInt> rows_, columns_;
+  Eigen::VectorXd row_sign_, signed_b_;
+  std::vector<double> signed_values_;
+  int solves_since_setup_ = 0;
+  int iterations_after_setup_ = 0;
+  int last_iterations_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<LinearSolver> make_amg_solver(const LinearSolverConfig& config) {
+  return std::make_unique<AmgSolver>(config);
+}
+
+int amg_solvers_created() { return created; }
+
+}  // namespace isph

@@ -1,0 +1,23 @@
+#pragma once
+// The pressure equation on PETSc: the matrix sph/ assembles (Eigen CSR) copied into a SeqAIJ
+// Mat, a Krylov solver (BiCGSTAB unless -ksp_type says otherwise) right-preconditioned with
+// hypre's BoomerAMG, so that the residual PETSc tests is the true one, |b - A x|, as on the
+// Eigen path. Reuse between solves:
+//  - the Mat keeps its storage while the sparsity pattern stays the same (only the values are
+//    copied), else it is made anew;
+//  - x comes in as the initial guess (the previous pressure);
+//  - the AMG hierarchy is kept for up to LinearSolverConfig::setup_reuse solves of the same
+//    size, and rebuilt earlier once the iterations grow past 1.5x those right after a setup.
+// Needs a live PetscSession.
+#include <memory>
+
+#include "linear_solver.hpp"
+
+namespace isph {
+
+std::unique_ptr<LinearSolver> make_amg_solver(const LinearSolverConfig& config);
+
+// How many AMG solvers this process has made (PetscSession reports unused options only then).
+int amg_solvers_created();
+
+}  // namespace isph

@@ -1,0 +1,151 @@
+// The PETSc + BoomerAMG backend solves the same pressure system as the Eigen path: the same
+// pressures to solver tolerance, on the manufactured-solution problem of
+// test_pressure_equation.cpp (disordered particles, fitted Laplacian, Dirichlet band), with
+// flat iteration counts under refinement; a bad PETSc option stops with PETSc's message.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <random>
+
+#include "lattice.hpp"
+#include "linear_solver.hpp"
+#include "petsc_error.hpp"
+#include "pressure_equation.hpp"
+
+namespace isph {
+namespace {
+
+double exact_p(const Vec<2>& x) {
+  return std::sin(M_PI * x[0]) * std::cosh(0.5 * x[1]) + x[0] * x[1];
+}
+double exact_lap(const Vec<2>& x) {
+  return (-M_PI * M_PI + 0.25) * std::sin(M_PI * x[0]) * std::cosh(0.5 * x[1]);
+}
+
+// The unit square, particles moved by up to 0.2 spacings, a Dirichlet band of two layers.
+struct ManufacturedSystem {
+  PressureSystem<2> sys;
+  Particles<2> p;
+  explicit ManufacturedSystem(double dx) {
+    const Kernel<2> W(KernelType::WendlandC2, 1.3 * dx);
+    p.spacing = dx;
+    p.volume = dx * dx;
+    fill_box<2>(p, Vec<2>::Zero(), Vec<2>::Ones(), dx, kFluid);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-0.2 * dx, 0.2 * dx);
+    for (auto& x : p.x) x += Vec<2>(u(rng), u(rng));
+    NeighborSearch<2> search(Domain<2>{}, W.support());
+    search.sort(p);
+    Neighbors<2> nb;
+    search.build(p, W, nb);
+    Operators<2> op;
+    compute_operators(nb, W.h(), p.volume, {}, op);
+    const int n = static_cast<int>(p.size());
+    std::vector<double> rhs(n);
+    for (int i = 0; i < n; ++i) {
+      const auto& x = p.x[i];
+      p.surface[i] = (x.array() < 2 * dx).any() || (x.array() > 1 - 2 * dx).any();
+      rhs[i] = exact_lap(x);
+    }
+    assemble_pressure(p, nb, op, rhs, Vec<2>(Vec<2>::Zero()), 1000.0, W.h(), sys);
+    for (int i = 0; i < n; ++i)
+      if (p.surface[i]) sys.b[i] = exact_p(p.x[i]);
+  }
+};
+
+LinearSolverConfig config(const std::string& preconditioner, double tolerance = 1e-10) {
+  LinearSolverConfig c;
+  c.preconditioner = preconditioner;
+  c.tolerance = tolerance;
+  return c;
+}
+
+TEST(AmgSolver, SamePressureAsEigenToSolverTolerance) {
+  ManufacturedSystem m(0.02);
+  const int n = static_cast<int>(m.p.size());
+  Eigen::VectorXd eigen = Eigen::VectorXd::Zero(n), amg = Eigen::VectorXd::Zero(n);
+  const SolveStats se = make_linear_solver(config("ilu0"))->solve(m.sys.A, m.sys.b, eigen);
+  const SolveStats sa = make_linear_solver(config("amg"))->solve(m.sys.A, m.sys.b, amg);
+  ASSERT_TRUE(se.converged);
+  ASSERT_TRUE(sa.converged) << sa.reason;
+  EXPECT_LE(sa.residual, 1e-10);
+  EXPECT_GT(sa.setup_seconds, 0.0);
+  // Both solve A p = b to |r| <= 1e-10 |b|; their difference is bounded by cond(A) times that.
+  const double diff = (amg - eigen).cwiseAbs().maxCoeff() / eigen.cwiseAbs().maxCoeff();
+  double err = 0;
+  for (int i = 0; i < n; ++i) err = std::max(err, std::abs(amg[i] - exact_p(m.p.x[i])));
+  std::printf(
+      "N = %d: ilu0 %d iterations, amg %d; max |p_amg - p_ilu0| / max |p| = %.2e, "
+      "amg error against the exact solution %.3e\n",
+      n, se.iterations, sa.iterations, diff, err);
+  EXPECT_LT(diff, 1e-7);
+  EXPECT_LT(sa.iterations, se.iterations);
+}
+
+TEST(AmgSolver, IterationsStayFlatUnderRefinement) {
+  std::vector<int> its;
+  for (double dx : {0.04, 0.02, 0.01}) {
+    ManufacturedSystem m(dx);
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(m.p.size());
+    const SolveStats s = make_linear_solver(config("amg", 1e-8))->solve(m.sys.A, m.sys.b, x);
+    ASSERT_TRUE(s.converged) << s.reason;
+    std::printf("dx = %g: N = %zu, %d BiCGSTAB + BoomerAMG iterations\n", dx, m.p.size(),
+                s.iterations);
+    its.push_back(s.iterations);
+  }
+  // 16x the unknowns; Jacobi-BiCGSTAB needs about 4x the iterations over that range.
+  EXPECT_LE(its.back(), 1.5 * its.front() + 1);
+}
+
+TEST(AmgSolver, ReusedSetupAndChangedValuesGiveTheNewSolution) {
+  ManufacturedSystem m(0.02);
+  const int n = static_cast<int>(m.p.size());
+  LinearSolverConfig c = config("amg");
+  c.setup_reuse = 3;
+  auto solver = make_linear_solver(c);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+  const SolveStats first = solver->solve(m.sys.A, m.sys.b, x);
+  ASSERT_TRUE(first.converged);
+  // Same pattern, other values: the matrix is updated in place and the old hierarchy kept.
+  SparseMatrix A2 = m.sys.A;
+  for (int k = 0; k < A2.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(A2, k); it; ++it)
+      if (it.row() == it.col()) it.valueRef() *= 1.05;
+  Eigen::VectorXd x2 = x;
+  const SolveStats second = solver->solve(A2, m.sys.b, x2);
+  ASSERT_TRUE(second.converged) << second.reason;
+  EXPECT_EQ(second.setup_seconds, 0.0);  // no new setup
+  EXPECT_LE((m.sys.b - A2 * x2).norm(), 1.01e-10 * m.sys.b.norm());
+  EXPECT_GT((x2 - x).norm(), 1e-6 * x.norm());  // it did solve the changed system
+}
+
+TEST(AmgSolver, TooFewIterationsReportPetscsReason) {
+  ManufacturedSystem m(0.02);
+  LinearSolverConfig c = config("amg", 1e-14);
+  c.max_iterations = 1;
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(m.p.size());
+  const SolveStats s = make_linear_solver(c)->solve(m.sys.A, m.sys.b, x);
+  EXPECT_FALSE(s.converged);
+  EXPECT_FALSE(s.broke_down);  // more iterations would help: not a breakdown
+  EXPECT_EQ(s.reason, "PETSc: DIVERGED_ITS");
+}
+
+TEST(AmgSolver, BadOptionStopsWithPetscsMessage) {
+  LinearSolverConfig c = config("amg");
+  c.backend_options = "-ksp_type nonsense";
+  try {
+    make_linear_solver(c);
+    FAIL() << "a solver was made with -ksp_type nonsense";
+  } catch (const PetscError& e) {
+    const std::string m = e.what();
+    std::printf("%s\n", m.c_str());
+    EXPECT_NE(m.find("nonsense"), std::string::npos);
+    EXPECT_NE(m.find("[solver.petsc] options"), std::string::npos);
+  }
+  // Take the bad value out again for the tests after this one.
+  c.backend_options = "-ksp_type bcgs";
+  EXPECT_NO_THROW(make_linear_solver(c));
+}
+
+}  // namespace
+}  // namespace isph
