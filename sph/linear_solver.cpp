@@ -2,6 +2,8 @@
 
 #include <Eigen/IterativeLinearSolvers>
 #include <algorithm>
+#include <chrono>
+#include <map>
 #include <stdexcept>
 
 #include "ilu0_preconditioner.hpp"
@@ -27,7 +29,9 @@ class EigenBiCGSTAB : public LinearSolver {
     // Eigen's BiCGSTAB measures |r| / |b|; translate the tolerance to that measure.
     solver_.setTolerance(config_.tolerance * scale / std::max(b.norm(), 1e-300));
     solver_.setMaxIterations(config_.max_iterations);
-    solver_.compute(A);
+    const auto t0 = std::chrono::steady_clock::now();
+    solver_.compute(A);  // the preconditioner: a diagonal, or an incomplete factorisation
+    s.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (solver_.info() != Eigen::Success)
       throw std::runtime_error("pressure solver: preconditioner setup failed");
     x = solver_.solveWithGuess(b, x);
@@ -42,7 +46,24 @@ class EigenBiCGSTAB : public LinearSolver {
   Eigen::BiCGSTAB<SparseMatrix, Preconditioner> solver_;
 };
 
+std::map<std::string, LinearSolverFactory>& registry() {
+  static std::map<std::string, LinearSolverFactory> r;
+  return r;
+}
+
 }  // namespace
+
+void register_linear_solver(const std::string& preconditioner, LinearSolverFactory factory) {
+  if (factory)
+    registry()[preconditioner] = std::move(factory);
+  else
+    registry().erase(preconditioner);
+}
+
+bool linear_solver_available(const std::string& preconditioner) {
+  return preconditioner == "jacobi" || preconditioner == "ilu0" || preconditioner == "ilut" ||
+         registry().count(preconditioner) > 0;
+}
 
 std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverConfig& config) {
   if (config.method != "bicgstab")
@@ -53,6 +74,12 @@ std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverConfig& confi
     return std::make_unique<EigenBiCGSTAB<Eigen::IncompleteLUT<double>>>(config);
   if (config.preconditioner == "ilu0")
     return std::make_unique<EigenBiCGSTAB<Ilu0Preconditioner>>(config);
+  if (auto f = registry().find(config.preconditioner); f != registry().end())
+    return f->second(config);
+  if (config.preconditioner == "amg")
+    throw std::invalid_argument(
+        "preconditioner \"amg\" needs the PETSc backend (sph_petsc/), which this program has "
+        "not started: create an isph::PetscSession first");
   throw std::invalid_argument("unknown preconditioner '" + config.preconditioner +
                               "': use \"jacobi\", \"ilu0\" or \"ilut\"");
 }
