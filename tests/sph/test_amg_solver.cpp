@@ -5,53 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-#include <random>
 
-#include "lattice.hpp"
 #include "linear_solver.hpp"
+#include "manufactured_pressure.hpp"
 #include "petsc_error.hpp"
 #include "pressure_equation.hpp"
 
 namespace isph {
 namespace {
-
-double exact_p(const Vec<2>& x) {
-  return std::sin(M_PI * x[0]) * std::cosh(0.5 * x[1]) + x[0] * x[1];
-}
-double exact_lap(const Vec<2>& x) {
-  return (-M_PI * M_PI + 0.25) * std::sin(M_PI * x[0]) * std::cosh(0.5 * x[1]);
-}
-
-// The unit square, particles moved by up to 0.2 spacings, a Dirichlet band of two layers.
-struct ManufacturedSystem {
-  PressureSystem<2> sys;
-  Particles<2> p;
-  explicit ManufacturedSystem(double dx) {
-    const Kernel<2> W(KernelType::WendlandC2, 1.3 * dx);
-    p.spacing = dx;
-    p.volume = dx * dx;
-    fill_box<2>(p, Vec<2>::Zero(), Vec<2>::Ones(), dx, kFluid);
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<double> u(-0.2 * dx, 0.2 * dx);
-    for (auto& x : p.x) x += Vec<2>(u(rng), u(rng));
-    NeighborSearch<2> search(Domain<2>{}, W.support());
-    search.sort(p);
-    Neighbors<2> nb;
-    search.build(p, W, nb);
-    Operators<2> op;
-    compute_operators(nb, W.h(), p.volume, {}, op);
-    const int n = static_cast<int>(p.size());
-    std::vector<double> rhs(n);
-    for (int i = 0; i < n; ++i) {
-      const auto& x = p.x[i];
-      p.surface[i] = (x.array() < 2 * dx).any() || (x.array() > 1 - 2 * dx).any();
-      rhs[i] = exact_lap(x);
-    }
-    assemble_pressure(p, nb, op, rhs, Vec<2>(Vec<2>::Zero()), 1000.0, W.h(), sys);
-    for (int i = 0; i < n; ++i)
-      if (p.surface[i]) sys.b[i] = exact_p(p.x[i]);
-  }
-};
 
 LinearSolverConfig config(const std::string& preconditioner, double tolerance = 1e-10) {
   LinearSolverConfig c;

@@ -7,66 +7,18 @@
 #include "free_surface.hpp"
 #include "lattice.hpp"
 #include "linear_solver.hpp"
+#include "manufactured_pressure.hpp"
 #include "pressure_equation.hpp"
 
 namespace isph {
 namespace {
 
-double exact_p(const Vec<2>& x) {
-  return std::sin(M_PI * x[0]) * std::cosh(0.5 * x[1]) + x[0] * x[1];
-}
-double exact_lap(const Vec<2>& x) {
-  return (-M_PI * M_PI + 0.25) * std::sin(M_PI * x[0]) * std::cosh(0.5 * x[1]);
-}
-
-// The unit square of fluid particles, each moved by up to `jitter` spacings; neighbours and
-// fitted operators built.
-struct DisorderedBox {
-  Particles<2> p;
-  Kernel<2> W;
-  Neighbors<2> nb;
-  Operators<2> op;
-  DisorderedBox(double dx, double jitter, unsigned seed, bool periodic)
-      : W(KernelType::WendlandC2, 1.3 * dx) {
-    p.spacing = dx;
-    p.volume = dx * dx;
-    fill_box<2>(p, Vec<2>::Zero(), Vec<2>::Ones(), dx, kFluid);
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-jitter * dx, jitter * dx);
-    for (auto& x : p.x) x += Vec<2>(u(rng), u(rng));
-    Domain<2> dom;
-    if (periodic) {
-      dom.lo = Vec<2>::Zero();
-      dom.hi = Vec<2>::Ones();
-      dom.periodic = {true, true};
-      for (auto& x : p.x) dom.wrap(x);
-    }
-    NeighborSearch<2> search(dom, W.support());
-    search.sort(p);
-    search.build(p, W, nb);
-    compute_operators(nb, W.h(), p.volume, {}, op);
-  }
-};
-
 double manufactured_error(double dx) {
-  DisorderedBox box(dx, 0.2, 5, false);
-  auto& p = box.p;
-  const auto& W = box.W;
-  const auto& nb = box.nb;
-  const auto& op = box.op;
+  ManufacturedSystem m(dx);
+  const auto& p = m.p;
   const int n = static_cast<int>(p.size());
-  std::vector<double> rhs(n);
-  for (int i = 0; i < n; ++i) {
-    // Dirichlet band: the outer two layers carry the exact value.
-    const auto& x = p.x[i];
-    p.surface[i] = (x.array() < 2 * dx).any() || (x.array() > 1 - 2 * dx).any();
-    rhs[i] = exact_lap(x);
-  }
-  PressureSystem<2> sys;
-  assemble_pressure(p, nb, op, rhs, Vec<2>(Vec<2>::Zero()), 1000.0, W.h(), sys);
+  auto& sys = m.sys;
   EXPECT_EQ(sys.pinned, -1);
-  for (int i = 0; i < n; ++i)
-    if (p.surface[i]) sys.b[i] = exact_p(p.x[i]);
   auto solver = make_linear_solver({});
   Eigen::VectorXd sol = Eigen::VectorXd::Zero(n);
   const SolveStats s = solver->solve(sys.A, sys.b, sol);
