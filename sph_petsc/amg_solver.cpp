@@ -20,6 +20,21 @@ static_assert(sizeof(PetscScalar) == sizeof(double), "PETSc must be built with r
 
 int created = 0;
 
+// Owns a PETSc object. A member, so that the object is destroyed also when the constructor
+// throws half-way (a bad option in KSPSetFromOptions leaked the KSP: AddressSanitizer).
+template <class T, PetscErrorCode (*Destroy)(T*)>
+struct Owned {
+  T h = nullptr;
+  Owned() = default;
+  Owned(const Owned&) = delete;
+  Owned& operator=(const Owned&) = delete;
+  ~Owned() { reset(); }
+  void reset() {
+    if (h) Destroy(&h);
+    h = nullptr;
+  }
+};
+
 // The case file's options first, then PETSC_OPTIONS again: the environment wins, as PETSc's
 // command line wins over an options file.
 void insert_options(const std::string& from_case) {
@@ -39,22 +54,17 @@ class AmgSolver : public LinearSolver {
  public:
   explicit AmgSolver(const LinearSolverConfig& c) : config_(c) {
     insert_options(c.backend_options);
-    check_petsc(KSPCreate(PETSC_COMM_SELF, &ksp_), "creating the PPE solver");
-    check_petsc(KSPSetType(ksp_, KSPBCGS), "setting BiCGSTAB");
+    check_petsc(KSPCreate(PETSC_COMM_SELF, &ksp_.h), "creating the PPE solver");
+    check_petsc(KSPSetType(ksp_.h, KSPBCGS), "setting BiCGSTAB");
     PC pc = nullptr;
-    check_petsc(KSPGetPC(ksp_, &pc), "getting the preconditioner");
+    check_petsc(KSPGetPC(ksp_.h, &pc), "getting the preconditioner");
     check_petsc(PCSetType(pc, PCHYPRE), "setting PCHYPRE (is PETSc built with hypre?)");
     check_petsc(PCHYPRESetType(pc, "boomeramg"), "choosing BoomerAMG");
-    check_petsc(KSPSetPCSide(ksp_, PC_RIGHT), "setting right preconditioning");
-    check_petsc(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "setting the residual norm");
-    check_petsc(KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE), "keeping the initial guess");
-    check_petsc(KSPSetFromOptions(ksp_), "applying the PETSc options");
+    check_petsc(KSPSetPCSide(ksp_.h, PC_RIGHT), "setting right preconditioning");
+    check_petsc(KSPSetNormType(ksp_.h, KSP_NORM_UNPRECONDITIONED), "setting the residual norm");
+    check_petsc(KSPSetInitialGuessNonzero(ksp_.h, PETSC_TRUE), "keeping the initial guess");
+    check_petsc(KSPSetFromOptions(ksp_.h), "applying the PETSc options");
     ++created;
-  }
-
-  ~AmgSolver() override {
-    KSPDestroy(&ksp_);
-    MatDestroy(&mat_);
   }
 
   SolveStats solve(const SparseMatrix& A_in, const Eigen::VectorXd& b, Eigen::VectorXd& x,
@@ -81,17 +91,17 @@ class AmgSolver : public LinearSolver {
 
     const bool rebuild = resized || solves_since_setup_ >= std::max(config_.setup_reuse, 1) ||
                          last_iterations_ > 1.5 * iterations_after_setup_ + 2;
-    check_petsc(KSPSetOperators(ksp_, mat_, mat_), "giving the matrix to the solver");
-    check_petsc(KSPSetReusePreconditioner(ksp_, rebuild ? PETSC_FALSE : PETSC_TRUE),
+    check_petsc(KSPSetOperators(ksp_.h, mat_.h, mat_.h), "giving the matrix to the solver");
+    check_petsc(KSPSetReusePreconditioner(ksp_.h, rebuild ? PETSC_FALSE : PETSC_TRUE),
                 "keeping the AMG hierarchy");
     // The test is the Eigen path's, |b - A x| <= tol max(|b|, reference), as an absolute
     // tolerance. No divergence test: the warm start (last step's pressure) can leave a residual
     // far above |b| when b is small, and PETSc's default would call that diverged.
     check_petsc(
-        KSPSetTolerances(ksp_, 0.0, config_.tolerance * scale, 1e300, config_.max_iterations),
+        KSPSetTolerances(ksp_.h, 0.0, config_.tolerance * scale, 1e300, config_.max_iterations),
         "setting the tolerance");
     const auto t0 = std::chrono::steady_clock::now();
-    check_petsc(KSPSetUp(ksp_), "setting up BoomerAMG");
+    check_petsc(KSPSetUp(ksp_.h), "setting up BoomerAMG");
     if (rebuild)
       s.setup_seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -99,15 +109,15 @@ class AmgSolver : public LinearSolver {
     Vec bv = nullptr, xv = nullptr;
     check_petsc(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n, signed_b_.data(), &bv), "wrapping b");
     check_petsc(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n, x.data(), &xv), "wrapping x");
-    const PetscErrorCode solved = KSPSolve(ksp_, bv, xv);
+    const PetscErrorCode solved = KSPSolve(ksp_.h, bv, xv);
     VecDestroy(&bv);
     VecDestroy(&xv);
     check_petsc(solved, "solving the PPE");
 
     PetscInt its = 0;
-    KSPGetIterationNumber(ksp_, &its);
+    KSPGetIterationNumber(ksp_.h, &its);
     KSPConvergedReason why = KSP_CONVERGED_ITERATING;
-    KSPGetConvergedReason(ksp_, &why);
+    KSPGetConvergedReason(ksp_.h, &why);
     s.iterations = static_cast<int>(its);
     s.residual = (b - *A * x).norm() / scale;
     s.converged = why > 0 && s.residual <= config_.tolerance * (1.0 + 1e-6);
@@ -147,32 +157,32 @@ class AmgSolver : public LinearSolver {
       for (int k = outer[i]; k < outer[i + 1]; ++k) signed_values_[k] = row_sign_[i] * v[k];
     }
     const bool same_pattern =
-        mat_ && n == size_ && nnz == static_cast<int>(columns_.size()) &&
+        mat_.h && n == size_ && nnz == static_cast<int>(columns_.size()) &&
         std::equal(A.outerIndexPtr(), A.outerIndexPtr() + n + 1, rows_.begin()) &&
         std::equal(A.innerIndexPtr(), A.innerIndexPtr() + nnz, columns_.begin());
     if (same_pattern) {
       PetscScalar* values = nullptr;
-      check_petsc(MatSeqAIJGetArray(mat_, &values), "updating the matrix");
+      check_petsc(MatSeqAIJGetArray(mat_.h, &values), "updating the matrix");
       std::memcpy(values, signed_values_.data(), sizeof(double) * nnz);
-      check_petsc(MatSeqAIJRestoreArray(mat_, &values), "updating the matrix");
+      check_petsc(MatSeqAIJRestoreArray(mat_.h, &values), "updating the matrix");
       return;
     }
-    MatDestroy(&mat_);
+    mat_.reset();
     rows_.assign(A.outerIndexPtr(), A.outerIndexPtr() + n + 1);
     columns_.assign(A.innerIndexPtr(), A.innerIndexPtr() + nnz);
-    check_petsc(MatCreate(PETSC_COMM_SELF, &mat_), "creating the matrix");
-    check_petsc(MatSetSizes(mat_, n, n, n, n), "sizing the matrix");
-    check_petsc(MatSetType(mat_, MATSEQAIJ), "choosing AIJ storage");
+    check_petsc(MatCreate(PETSC_COMM_SELF, &mat_.h), "creating the matrix");
+    check_petsc(MatSetSizes(mat_.h, n, n, n, n), "sizing the matrix");
+    check_petsc(MatSetType(mat_.h, MATSEQAIJ), "choosing AIJ storage");
     // Preallocated and filled from the CSR arrays in one go (row lengths = neighbour counts).
     check_petsc(
-        MatSeqAIJSetPreallocationCSR(mat_, rows_.data(), columns_.data(), signed_values_.data()),
+        MatSeqAIJSetPreallocationCSR(mat_.h, rows_.data(), columns_.data(), signed_values_.data()),
         "filling the matrix");
     size_ = n;
   }
 
   LinearSolverConfig config_;
-  KSP ksp_ = nullptr;
-  Mat mat_ = nullptr;
+  Owned<KSP, KSPDestroy> ksp_;
+  Owned<Mat, MatDestroy> mat_;
   int size_ = -1;
   std::vector<PetscInt> rows_, columns_;
   Eigen::VectorXd row_sign_, signed_b_;
