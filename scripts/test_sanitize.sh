@@ -12,10 +12,13 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 # (strace -f, gdb, or a CI sandbox that traces its jobs), also in gtest discovery at build time.
 # ASan and UBSan still work there, so
 # only leak checking is switched off; the environment overrides just that one compiled-in option.
+leaks_off() {  # REASON: only LeakSanitizer off, the reason on stderr
+  echo "test_sanitize: $1: LeakSanitizer off, ASan + UBSan on" >&2
+  export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
+}
 tracer="$(awk '/^TracerPid:/ {print $2}' "/proc/$$/status" 2>/dev/null || echo 0)"
 if [ "${tracer:-0}" != 0 ]; then
-  echo "test_sanitize: running under a tracer (pid $tracer): LeakSanitizer off, ASan + UBSan on" >&2
-  export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
+  leaks_off "running under a tracer (pid $tracer)"
 fi
 bash "$root/scripts/build.sh" --sanitize
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -30,9 +33,7 @@ printf '[case\n' >"$probe_dir/probe.toml"
 "${ISPHDEM_SANITIZE_BUILD_DIR:-$root/build-sanitize}/coupling/isphdem" run "$probe_dir/probe.toml" \
   --out "$probe_dir/out" >/dev/null 2>"$probe_dir/stderr" || true
 if grep -q "LeakSanitizer has encountered a fatal error" "$probe_dir/stderr"; then
-  echo "test_sanitize: LeakSanitizer cannot stop the threads of an MPI process on this machine" \
-    "(its tracer crashed in a probe run): LeakSanitizer off, ASan + UBSan on" >&2
-  export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
+  leaks_off "its tracer crashed in a probe run of an MPI process on this machine"
 elif ! grep -q "malformed case file" "$probe_dir/stderr"; then
   echo "test_sanitize: the probe run of the sanitized isphdem did not report the malformed case:" >&2
   cat "$probe_dir/stderr" >&2

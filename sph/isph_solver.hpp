@@ -107,7 +107,6 @@ struct StepStats {
   double dt = 0.0;
   int ppe_iterations = 0;
   double ppe_residual = 0.0;
-  double ppe_setup_seconds = 0.0;  // preconditioner setup (AMG hierarchy) in this step
   double max_speed = 0.0;
   std::size_t surface_particles = 0;
   // Fluid volume (2D: area) from the number density, sum V0 n0/n_i over fluid with full support

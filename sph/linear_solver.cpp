@@ -60,11 +60,6 @@ void register_linear_solver(const std::string& preconditioner, LinearSolverFacto
     registry().erase(preconditioner);
 }
 
-bool linear_solver_available(const std::string& preconditioner) {
-  return preconditioner == "jacobi" || preconditioner == "ilu0" || preconditioner == "ilut" ||
-         registry().count(preconditioner) > 0;
-}
-
 std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverConfig& config) {
   if (config.method != "bicgstab")
     throw std::invalid_argument("unknown linear solver '" + config.method + "': use \"bicgstab\"");

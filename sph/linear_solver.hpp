@@ -57,6 +57,5 @@ std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverConfig& confi
 // Makes `preconditioner` available to make_linear_solver (replacing an earlier registration); an
 // empty factory removes it again, e.g. once the library behind it is finalised.
 void register_linear_solver(const std::string& preconditioner, LinearSolverFactory factory);
-bool linear_solver_available(const std::string& preconditioner);
 
 }  // namespace isph

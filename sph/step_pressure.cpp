@@ -70,7 +70,7 @@ void IsphSolver<Dim>::solve_pressure(StepStats& stats) {
   const SolveStats s = linear_solver_->solve(system_.A, system_.b, pressure_, p_scale);
   stats.ppe_iterations = s.iterations;
   stats.ppe_residual = s.residual;
-  stats.ppe_setup_seconds = s.setup_seconds;
+  timings_.solve_setup += s.setup_seconds;
   unit_response_lambda_ = 0.0;
   if (config_.spread_pin && system_.pinned >= 0 && std::isfinite(s.residual)) {
     // q follows the particle arrangement slowly: solved again every few steps, in between the
@@ -83,14 +83,13 @@ void IsphSolver<Dim>::solve_pressure(StepStats& stats) {
       if (unit_response_.size() != n) unit_response_ = Eigen::VectorXd::Zero(n);
       const SolveStats u = unit_solver_->solve(system_.A, e, unit_response_);
       stats.ppe_iterations += u.iterations;
-      stats.ppe_setup_seconds += u.setup_seconds;
+      timings_.solve_setup += u.setup_seconds;
       fresh = std::isfinite(u.residual) && u.residual <= 1e3 * kUnitResponseTolerance;
       unit_response_pin_ = P.id[system_.pinned];
       if (!fresh) unit_response_.resize(0);
     }
     unit_response_lambda_ = fresh ? spread_pinned_source(system_, unit_response_, pressure_) : 0.0;
   }
-  timings_.solve_setup += stats.ppe_setup_seconds;
   if (s.broke_down || !std::isfinite(s.residual) ||
       s.residual > 1e3 * config_.pressure_solver.tolerance)
     throw SimulationError("pressure solver failed at step " + std::to_string(steps_ + 1) +

@@ -84,7 +84,7 @@ class AmgSolver : public LinearSolver {
       A = &compressed;
     }
     const int n = static_cast<int>(A->rows());
-    const bool resized = n != size_;
+    const bool resized = static_cast<int>(rows_.size()) != n + 1;
     load_matrix(*A);
     // The rows as BoomerAMG expects them, diagonal positive (see row_sign_).
     signed_b_ = b.cwiseProduct(row_sign_);
@@ -157,7 +157,8 @@ class AmgSolver : public LinearSolver {
       for (int k = outer[i]; k < outer[i + 1]; ++k) signed_values_[k] = row_sign_[i] * v[k];
     }
     const bool same_pattern =
-        mat_.h && n == size_ && nnz == static_cast<int>(columns_.size()) &&
+        mat_.h && static_cast<int>(rows_.size()) == n + 1 &&
+        nnz == static_cast<int>(columns_.size()) &&
         std::equal(A.outerIndexPtr(), A.outerIndexPtr() + n + 1, rows_.begin()) &&
         std::equal(A.innerIndexPtr(), A.innerIndexPtr() + nnz, columns_.begin());
     if (same_pattern) {
@@ -177,14 +178,12 @@ class AmgSolver : public LinearSolver {
     check_petsc(
         MatSeqAIJSetPreallocationCSR(mat_.h, rows_.data(), columns_.data(), signed_values_.data()),
         "filling the matrix");
-    size_ = n;
   }
 
   LinearSolverConfig config_;
   Owned<KSP, KSPDestroy> ksp_;
   Owned<Mat, MatDestroy> mat_;
-  int size_ = -1;
-  std::vector<PetscInt> rows_, columns_;
+  std::vector<PetscInt> rows_, columns_;  // the Mat's pattern (its size: rows_.size() - 1)
   Eigen::VectorXd row_sign_, signed_b_;
   std::vector<double> signed_values_;
   int solves_since_setup_ = 0;

@@ -15,7 +15,6 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
-isphdem=${1:-$root/build/coupling/isphdem}
 work=${2:-/tmp/bench_ppe}
 # case:spacing:steps:dt. Each run takes `steps` fixed steps of dt (time.dt): Taylor-Green at its
 # viscous limit 0.125 dx^2 / nu (nu = 0.01), the dam break at 1 ms (below its CFL and force
@@ -28,11 +27,8 @@ THREADS=${THREADS:-1}
 LOAD_MAX=${LOAD_MAX:-0.7}
 LOAD_WAIT=${LOAD_WAIT:-300}
 
-if [[ $# -eq 0 ]]; then   # default binary: build it if needed
-  [[ -f $root/build/CMakeCache.txt ]] || cmake -S "$root" -B "$root/build" >/dev/null
-  cmake --build "$root/build" -j2 --target isphdem >/dev/null
-fi
-[[ -x $isphdem ]] || { echo "no isphdem binary at $isphdem" >&2; exit 1; }
+source "$here/../isphdem_binary.sh"
+isphdem=$(isphdem_binary "$root" "${1:-}")   # the default one is built first if needed
 mkdir -p "$work"
 source "$here/../quiet_machine.sh"   # load1, busy, wait_quiet
 

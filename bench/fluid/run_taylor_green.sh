@@ -20,7 +20,6 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
-isphdem=${1:-$root/build/coupling/isphdem}
 work=${2:-/tmp/bench_fluid}
 case_file=$root/examples/taylor_green_2d/case.toml
 SIZES=${SIZES:-"0.01:300 0.005:100 0.0025:25"}
@@ -33,11 +32,8 @@ OTHER_MAX=${OTHER_MAX:-0.1}
 TRIES=${TRIES:-4}
 nu=0.01   # viscosity of the case: dt = 0.125 dx^2 / nu (viscous limit, smaller than CFL here)
 
-if [[ $# -eq 0 ]]; then   # default binary: build it if needed
-  [[ -f $root/build/CMakeCache.txt ]] || cmake -S "$root" -B "$root/build" >/dev/null
-  cmake --build "$root/build" -j2 --target isphdem >/dev/null
-fi
-[[ -x $isphdem ]] || { echo "no isphdem binary at $isphdem" >&2; exit 1; }
+source "$here/../isphdem_binary.sh"
+isphdem=$(isphdem_binary "$root" "${1:-}")   # the default one is built first if needed
 mkdir -p "$work"
 
 source "$here/../quiet_machine.sh"   # load1, busy, wait_quiet
