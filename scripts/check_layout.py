@@ -29,9 +29,11 @@ ALLOWED = {
     "dem": {"coupling", "liggghts_fix", "LIGGGHTS", "MPI", "sph"},
     "unresolved": {"coupling", "case", "sph"},
     "resolved": {"coupling", "case", "sph"},
-    "run": {"case", "io", "dem", "unresolved", "resolved", "coupling", "sph", "sph_petsc", "MPI"},
+    "study": {"case", "io", "coupling", "sph"},  # result.json, [reference], isphdem study
+    "run": {"case", "io", "dem", "unresolved", "resolved", "study", "coupling", "sph", "sph_petsc",
+            "MPI"},
 }
-COUPLING_ROOMS = ["case", "io", "dem", "unresolved", "resolved", "run"]
+COUPLING_ROOMS = ["case", "io", "dem", "unresolved", "resolved", "study", "run"]
 SOURCE = (".cpp", ".hpp", ".h")
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]')
 MAX_LINES = 500  # a source longer than this holds more than one concept: split it

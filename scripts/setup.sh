@@ -12,6 +12,7 @@ PACKAGES=(
   pkg-config
   libgtest-dev libgmock-dev
   libtomlplusplus-dev
+  nlohmann-json3-dev                # result.json and isphdem study
   python3-h5py python3-matplotlib python3-pil   # plots (PIL: GIFs), run with /usr/bin/python3
   python3-numpy                     # scripts/cylinder_lbm_reference.py
   paraview                          # pvpython opens our XDMF in a test

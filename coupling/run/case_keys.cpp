@@ -4,6 +4,7 @@
 #include "case/fluid_scene.hpp"
 #include "case/run_settings.hpp"
 #include "dem/dem_case_config.hpp"
+#include "study/reference_metrics.hpp"
 #include "unresolved/unresolved_case.hpp"
 
 namespace isphdem {
@@ -17,6 +18,8 @@ std::vector<std::string> case_keys() {
   k.insert(k.end(), u.begin(), u.end());
   const auto cp = coupling_keys();
   k.insert(k.end(), cp.begin(), cp.end());
+  const auto ref = reference_keys();
+  k.insert(k.end(), ref.begin(), ref.end());
   return k;
 }
 

@@ -25,8 +25,10 @@
 #include "run/case_keys.hpp"
 #include "run/coupled_run.hpp"
 #include "run/coupling_stages.hpp"
+#include "run/dem_only_run.hpp"
 #include "run/erosion_diagnostics.hpp"
 #include "run/fluid_run.hpp"
+#include "run/run_report.hpp"
 #include "unresolved/unresolved_coupling.hpp"
 
 namespace isphdem {
@@ -48,7 +50,8 @@ void print_ppe_cost(const isph::IsphSolver<Dim>& solver) {
 
 const char* kUsage =
     "usage: isphdem run CASE.toml --out DIR [--set key=value ...] [--quiet]\n"
-    "  --out DIR        output directory (snap_<step>.h5, fluid.xdmf, diagnostics.csv);\n"
+    "  --out DIR        output directory (snap_<step>.h5, fluid.xdmf, diagnostics.csv,\n"
+    "                   result.json);\n"
     "                   results of an earlier run there are replaced\n"
     "  --set key=value  override a case key, e.g. --set time.end=0.2 (repeatable)\n"
     "  --quiet          no progress line and no summary\n";
@@ -90,83 +93,14 @@ Arguments parse_arguments(int argc, char** argv) {
   return a;
 }
 
-// A case with [dem] and no fluid: the grains advance in chunks of dem.substeps, exactly as they
-// will between fluid steps of a coupled case. Output goes through rank 0.
-int run_dem_only(const CaseFile& c, const Arguments& args) {
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  const auto* table = c.table()["dem"].as_table();
-  if (!table) throw CaseError("'dem' must be a table: [dem] with script and substeps");
-  DemCaseConfig dem;
-  try {
-    dem = parse_dem_table(*table, c.directory());
-  } catch (const std::runtime_error& e) {
-    throw CaseError(e.what());
-  }
-  const RunSettings settings = parse_run_settings(c);
-  std::unique_ptr<SnapshotWriter> writer;
-  std::unique_ptr<DiagnosticsWriter> diagnostics;
-  if (rank == 0) {
-    writer = std::make_unique<SnapshotWriter>(args.out);
-    diagnostics = std::make_unique<DiagnosticsWriter>(
-        args.out / "diagnostics.csv",
-        std::vector<std::string>{"time", "step", "wall_seconds", "ppe_iterations", "max_speed",
-                                 "atoms", "bodies"});
-    if (!args.quiet)
-      std::printf("isphdem run: %s (DEM only: %s, %d substeps per chunk) to t = %g s\n",
-                  c.path().string().c_str(), dem.script.string().c_str(), dem.substeps,
-                  settings.t_end);
-  }
-  const double start = omp_get_wtime();
-  double next_output = 0.0;
-  ProgressLine progress(settings.t_end, !args.quiet && rank == 0);
-  DemRunOptions options;
-  options.out_dir = args.out;
-  options.fluid_dt = settings.fixed_dt;
-  options.after_chunk = [&](DemBackend& backend, long chunk) {
-    const double t = chunk * dem.substeps * backend.timestep();
-    const bool last = t >= settings.t_end * (1.0 - 1e-12);
-    if (t < next_output * (1.0 - 1e-9) && !last) {
-      if (rank == 0) progress.update(t, chunk);
-      return;
-    }
-    const DemState state = backend.state();  // collective
-    while (next_output <= t * (1.0 + 1e-9)) next_output += settings.output_interval;
-    if (rank != 0) return;
-    Snapshot snap;
-    snap.step = state.step;
-    snap.time = t;
-    add_dem_groups(state, HydroLoads{}, snap);
-    writer->write(snap);
-    double vmax = 0.0;
-    for (const auto& a : state.atoms)
-      vmax = std::max(vmax, std::sqrt(a.v[0] * a.v[0] + a.v[1] * a.v[1] + a.v[2] * a.v[2]));
-    diagnostics->row({t, double(state.step), omp_get_wtime() - start, 0.0, vmax,
-                      double(state.atoms.size()), double(state.bodies.size())});
-    progress.update(t, chunk);
-  };
-  int rc = 0;
-  try {
-    rc = run_dem_case(dem, settings.t_end, options);
-  } catch (const std::runtime_error& e) {
-    progress.finish();
-    throw CaseError(e.what());
-  }
-  progress.finish();
-  if (rank == 0 && !args.quiet)
-    std::printf("done: DEM-only run in %s wall\n",
-                format_duration(omp_get_wtime() - start).c_str());
-  return rc;
-}
-
 // Advances `run` (FluidRun or CoupledRun) to settings.t_end with each output time as a landing
 // point, so snapshots fall on t = k * interval. A SimulationError stops the run: the progress
 // line is closed, `report` says where it stopped (the snapshots already written are complete),
-// and false comes back. `end_tolerance` is the relative slack on t_end.
+// `why` gets the error and false comes back. `end_tolerance` is the relative slack on t_end.
 template <class Run, class StepCallback, class WriteSnapshot>
 bool run_to_end(Run& run, const RunSettings& settings, double end_tolerance,
                 const StepCallback& after_step, const WriteSnapshot& snapshot,
-                ProgressLine& progress, bool report, const fs::path& out) {
+                ProgressLine& progress, bool report, const fs::path& out, std::string& why) {
   const auto& solver = run.solver();
   try {
     for (long k = 1; solver.time() < settings.t_end * (1.0 - end_tolerance); ++k) {
@@ -175,6 +109,7 @@ bool run_to_end(Run& run, const RunSettings& settings, double end_tolerance,
     }
   } catch (const isph::SimulationError& e) {
     progress.finish();
+    why = e.what();
     if (report)
       std::fprintf(stderr,
                    "isphdem run: stopped at t = %g s, step %ld: %s\n"
@@ -187,7 +122,7 @@ bool run_to_end(Run& run, const RunSettings& settings, double end_tolerance,
 }
 
 template <int Dim>
-int run_case(const CaseFile& c, const Arguments& args) {
+int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
   const RunSettings settings = parse_run_settings(c);
   FluidRun<Dim> run(build_fluid_scene<Dim>(c), settings);
   auto& solver = run.solver();
@@ -219,6 +154,7 @@ int run_case(const CaseFile& c, const Arguments& args) {
       args.out / "diagnostics.csv",
       {"time", "step", "wall_seconds", "ppe_iterations", "max_speed", "dt", "ppe_residual",
        "surface_particles", "kinetic_energy", "fluid_volume", "max_eddy_viscosity"});
+  report.check_columns(diagnostics.columns());
   auto snapshot = [&]() {
     Snapshot s;
     s.step = solver.steps();
@@ -245,7 +181,14 @@ int run_case(const CaseFile& c, const Arguments& args) {
     }
     progress.update(solver.time(), step);
   };
-  if (!run_to_end(run, settings, 1e-12, after_step, snapshot, progress, true, args.out)) return 1;
+  std::string why;
+  const bool finished =
+      run_to_end(run, settings, 1e-12, after_step, snapshot, progress, true, args.out, why);
+  report.cost(solver.time(), solver.steps(), long(P.size()), omp_get_wtime() - start, ppe_total);
+  if (!finished) {
+    report.stopped(why);
+    return 1;
+  }
 
   if (!args.quiet) {
     const double wall = omp_get_wtime() - start;
@@ -291,7 +234,7 @@ DemCaseConfig dem_config(const CaseFile& c) {
 // A case with [fluid] and [dem]: fine grains (free spheres) coupled unresolved. The fluid is
 // replicated on every rank (the DEM state is gathered to all); rank 0 writes the output.
 template <int Dim>
-int run_coupled(const CaseFile& c, const Arguments& args) {
+int run_coupled(const CaseFile& c, const Arguments& args, RunReport& report) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   const bool talk = rank == 0 && !args.quiet;
@@ -361,6 +304,7 @@ int run_coupled(const CaseFile& c, const Arguments& args) {
                                      "fluid_seconds"};
     for (const auto& e : ErosionDiagnostics<Dim>::columns()) columns.push_back(e);
     diagnostics = std::make_unique<DiagnosticsWriter>(args.out / "diagnostics.csv", columns);
+    report.check_columns(columns);
   }
   auto snapshot = [&]() {
     const DemState& state = backend.state();  // collective
@@ -429,10 +373,15 @@ int run_coupled(const CaseFile& c, const Arguments& args) {
     }
     if (rank == 0) progress.update(solver.time(), step);
   };
+  std::string why;
   const bool finished =
-      run_to_end(run, settings, 1e-9, after_step, snapshot, progress, rank == 0, args.out);
+      run_to_end(run, settings, 1e-9, after_step, snapshot, progress, rank == 0, args.out, why);
   backend.finalize();
-  if (!finished) return 1;
+  report.cost(solver.time(), solver.steps(), long(P.size()), omp_get_wtime() - start, ppe_total);
+  if (!finished) {
+    report.stopped(why);
+    return 1;
+  }
   if (talk) {
     const double wall = omp_get_wtime() - start;
     const auto& t = run.timings();
@@ -451,27 +400,42 @@ int run_coupled(const CaseFile& c, const Arguments& args) {
 
 int run_main(int argc, char** argv) {
   Arguments args;
+  std::unique_ptr<RunReport> report;  // once the case is loaded: result.json at the end
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  auto fail = [&](const std::exception& e) {
+    std::fprintf(stderr, "isphdem run: %s\n", e.what());
+    if (report && rank == 0) {
+      report->error(e.what());
+      report->finish(false);
+    }
+    return 2;
+  };
   try {
     args = parse_arguments(argc, argv);
     const CaseFile c = CaseFile::load(args.case_file, args.overrides, case_keys());
+    report = std::make_unique<RunReport>(c, args.overrides, args.out);
     const bool has_dem = c.has("dem"), has_fluid = c.has("fluid");
     if (c.has("unresolved") && !(has_dem && has_fluid))
       throw CaseError(
           "[unresolved] couples a fluid with [dem] grains: the case needs both a "
           "[fluid] and a [dem] table, or drop [unresolved]");
+    int rc = 0;
     if (has_dem && has_fluid)
-      return case_dimension(c) == 2 ? run_coupled<2>(c, args) : run_coupled<3>(c, args);
-    if (has_dem) return run_dem_only(c, args);
-    return case_dimension(c) == 2 ? run_case<2>(c, args) : run_case<3>(c, args);
+      rc = case_dimension(c) == 2 ? run_coupled<2>(c, args, *report)
+                                  : run_coupled<3>(c, args, *report);
+    else if (has_dem)
+      rc = run_dem_only(c, args.out, args.quiet, *report);
+    else
+      rc = case_dimension(c) == 2 ? run_case<2>(c, args, *report) : run_case<3>(c, args, *report);
+    if (rank == 0) report->finish(!args.quiet);
+    return rc;
   } catch (const CaseError& e) {
-    std::fprintf(stderr, "isphdem run: %s\n", e.what());
-    return 2;
+    return fail(e);
   } catch (const isph::SimulationError& e) {
-    std::fprintf(stderr, "isphdem run: %s\n", e.what());
-    return 2;
+    return fail(e);
   } catch (const std::runtime_error& e) {  // DEM backend: missing script, refused loads
-    std::fprintf(stderr, "isphdem run: %s\n", e.what());
-    return 2;
+    return fail(e);
   }
 }
 

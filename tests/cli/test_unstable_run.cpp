@@ -25,6 +25,11 @@ TEST(UnstableRun, StopsCleanlyWithOutputIntact) {
   EXPECT_NE(r.output.find("complete and valid"), std::string::npos);
   const int snaps = count_snapshots(dir / "out");
   EXPECT_GE(snaps, 2);
+  // result.json says how it ended, for `isphdem study` and scripts.
+  std::ifstream json(dir / "out" / "result.json");
+  const std::string result((std::istreambuf_iterator<char>(json)), {});
+  EXPECT_NE(result.find("\"status\": \"stopped\""), std::string::npos) << result;
+  EXPECT_NE(result.find("beyond the CFL limit"), std::string::npos) << result;
 
   if (!has_pvpython()) GTEST_SKIP() << "pvpython not installed";
   // ParaView loads every step listed in the XDMF.

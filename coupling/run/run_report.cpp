@@ -1,0 +1,66 @@
+#include "run/run_report.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "study/diagnostics_table.hpp"
+
+namespace isphdem {
+
+namespace fs = std::filesystem;
+
+RunReport::RunReport(const CaseFile& c, std::vector<std::string> overrides, fs::path out)
+    : metrics_(parse_reference(c)), out_(std::move(out)) {
+  result_.status = "finished";
+  result_.overrides = std::move(overrides);
+  std::error_code ec;
+  fs::remove(out_ / run_result_file_name(), ec);
+}
+
+void RunReport::check_columns(const std::vector<std::string>& columns) const {
+  check_reference_columns(metrics_, columns);
+}
+
+void RunReport::cost(double time, long steps, long particles, double wall, long ppe) {
+  result_.time = time;
+  result_.steps = steps;
+  result_.particles = particles;
+  result_.wall_seconds = wall;
+  result_.particle_steps_per_second = wall > 0 ? double(particles) * double(steps) / wall : NAN;
+  result_.ppe_iterations_per_step = steps > 0 ? double(ppe) / double(steps) : 0.0;
+}
+
+void RunReport::stopped(const std::string& why) {
+  result_.status = "stopped";
+  result_.message = why;
+}
+
+void RunReport::error(const std::string& why) {
+  result_.status = "error";
+  result_.message = why;
+}
+
+void RunReport::finish(bool talk) {
+  std::error_code ec;
+  if (!fs::is_directory(out_, ec)) return;
+  const fs::path csv = out_ / "diagnostics.csv";
+  if (result_.status != "error" && !metrics_.empty() && fs::exists(csv, ec)) {
+    try {
+      result_.metrics = evaluate_reference(metrics_, read_diagnostics(csv));
+    } catch (const std::runtime_error& e) {
+      std::fprintf(stderr, "isphdem run: %s (left out of result.json)\n", e.what());
+    }
+  }
+  if (talk)
+    for (const auto& m : result_.metrics) {
+      if (m.relative)
+        std::printf("  reference %s: %.6g against %.6g (%+.3g%%)\n", m.name.c_str(), m.value,
+                    m.expected, 100 * m.error);
+      else
+        std::printf("  reference %s: %.6g against %.6g (%+.3g)\n", m.name.c_str(), m.value,
+                    m.expected, m.error);
+    }
+  write_run_result(out_ / run_result_file_name(), result_);
+}
+
+}  // namespace isphdem

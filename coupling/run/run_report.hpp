@@ -1,0 +1,37 @@
+#pragma once
+// What one `isphdem run` leaves in OUT/result.json: how it ended, what it cost, and the
+// [reference] metrics of its case evaluated from its own diagnostics.csv.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "case/case_file.hpp"
+#include "study/reference_metrics.hpp"
+#include "study/run_result.hpp"
+
+namespace isphdem {
+
+class RunReport {
+ public:
+  // Parses [reference] (CaseError for a bad formula, before anything runs) and removes a
+  // result.json an earlier run left in `out`, so that one never outlives the run it describes.
+  RunReport(const CaseFile& c, std::vector<std::string> overrides, std::filesystem::path out);
+
+  // CaseError before the first step when a metric reads a column this run does not write.
+  void check_columns(const std::vector<std::string>& columns) const;
+  void cost(double time, long steps, long particles, double wall_seconds, long ppe_iterations);
+  void stopped(const std::string& why);
+  void error(const std::string& why);
+
+  // Evaluates the metrics (finished or stopped runs), prints them when `talk`, and writes
+  // result.json when the output directory exists. A metric that cannot be evaluated is reported
+  // on stderr and left out; the result is still written.
+  void finish(bool talk);
+
+ private:
+  std::vector<ReferenceMetric> metrics_;
+  std::filesystem::path out_;
+  RunResult result_;
+};
+
+}  // namespace isphdem

@@ -1,0 +1,37 @@
+#pragma once
+// OUT/result.json: how a run ended and what it measured, one small file written atomically at
+// the end of every `isphdem run` (also one that stopped), and read back by `isphdem study`.
+// A run that is killed leaves none, so "no result.json" means "not finished".
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "study/reference_metrics.hpp"
+
+namespace isphdem {
+
+struct RunResult {
+  // "finished": reached time.end; "stopped": a simulation error (CFL, NaN, solver failure, a
+  // grain leaving the domain) ended it early, output so far valid; "error": bad input.
+  std::string status;
+  std::string message;                 // the error, for "stopped" and "error"
+  std::vector<std::string> overrides;  // the --set values of the run, in order
+  double time = 0.0;                   // simulated time reached [s]
+  long steps = 0;                      // fluid steps (DEM chunks for a DEM-only case)
+  long particles = 0;                  // fluid + wall particles
+  double wall_seconds = 0.0;
+  double particle_steps_per_second = 0.0;
+  double ppe_iterations_per_step = 0.0;
+  std::vector<MetricResult> metrics;
+};
+
+std::string run_result_file_name();  // "result.json"
+
+// Throws std::runtime_error naming the file when it cannot be written (the old file stays).
+void write_run_result(const std::filesystem::path& file, const RunResult& result);
+
+// Nothing when the file is missing or is not a result.json (an interrupted copy, say).
+std::optional<RunResult> read_run_result(const std::filesystem::path& file);
+
+}  // namespace isphdem

@@ -1,0 +1,148 @@
+#include "study/study_command.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+
+#include "case/case_file.hpp"
+#include "io/progress_line.hpp"
+#include "study/study_file.hpp"
+#include "study/study_runner.hpp"
+#include "study/study_table.hpp"
+
+namespace isphdem {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* kUsage =
+    "usage: isphdem study STUDY.toml --out DIR [-j N] [--set key=value ...] [--quiet]\n"
+    "  --out DIR        one directory per point (DIR/<point>/: log.txt, result.json, the run's\n"
+    "                   output), and DIR/study.csv, DIR/study.png; points finished there before\n"
+    "                   with the same values are not run again\n"
+    "  -j N             run N points side by side (each gets cores / N OpenMP threads unless\n"
+    "                   OMP_NUM_THREADS is set)\n"
+    "  --set key=value  override a case key in every point (repeatable)\n"
+    "  --quiet          no line per point\n";
+
+struct Arguments {
+  fs::path study;
+  fs::path out;
+  int jobs = 1;
+  std::vector<std::string> overrides;
+  bool quiet = false;
+};
+
+Arguments parse(int argc, char** argv) {
+  Arguments a;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&](const char* what) -> std::string {
+      if (i + 1 >= argc) throw CaseError(std::string(what) + " needs a value\n" + kUsage);
+      return argv[++i];
+    };
+    if (arg == "--out") {
+      a.out = value("--out");
+    } else if (arg == "-j" || arg.rfind("-j", 0) == 0) {
+      const std::string n = arg == "-j" ? value("-j") : arg.substr(2);
+      char* end = nullptr;
+      const long j = std::strtol(n.c_str(), &end, 10);
+      if (n.empty() || *end || j < 1 || j > 256)
+        throw CaseError("-j '" + n + "': give the number of points to run at once, e.g. -j 2");
+      a.jobs = int(j);
+    } else if (arg == "--set") {
+      a.overrides.push_back(value("--set"));
+    } else if (arg.rfind("--set=", 0) == 0) {
+      a.overrides.push_back(arg.substr(6));
+    } else if (arg == "--quiet") {
+      a.quiet = true;
+    } else if (arg.rfind("-", 0) == 0) {
+      throw CaseError("unknown option '" + arg + "'\n" + kUsage);
+    } else if (a.study.empty()) {
+      a.study = arg;
+    } else {
+      throw CaseError("more than one study file given ('" + a.study.string() + "', '" + arg + "')");
+    }
+  }
+  if (a.study.empty()) throw CaseError(std::string("no study file given\n") + kUsage);
+  if (a.out.empty())
+    throw CaseError(std::string("no output directory given (--out DIR)\n") + kUsage);
+  return a;
+}
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// study.png through scripts/plot_study.py when Debian's python3 with matplotlib is there; the
+// CSV is complete either way.
+void plot(const Study& study, const fs::path& out, bool quiet) {
+  const fs::path script = fs::path(ISPHDEM_SCRIPTS_DIR) / "plot_study.py";
+  std::string cmd = "/usr/bin/python3 " + quote(script.string()) + " " +
+                    quote((out / "study.csv").string()) + " -o " +
+                    quote((out / "study.png").string());
+  if (!study.plot_metric.empty()) cmd += " --metric " + quote(study.plot_metric);
+  if (!study.plot_series.empty()) cmd += " --series " + quote(study.plot_series);
+  if (!study.plot_label.empty()) cmd += " --label " + quote(study.plot_label);
+  if (quiet) cmd += " > /dev/null";
+  if (!fs::exists("/usr/bin/python3") || !fs::exists(script) || std::system(cmd.c_str()) != 0)
+    std::fprintf(stderr,
+                 "isphdem study: study.png not drawn (needs /usr/bin/python3 with matplotlib: "
+                 "bash scripts/setup.sh); study.csv is complete\n");
+}
+
+}  // namespace
+
+int study_main(int argc, char** argv, const std::vector<std::string>& known_keys) {
+  if (argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
+    std::printf("%s\n%s", kUsage, study_file_help());
+    return 0;
+  }
+  try {
+    const Arguments a = parse(argc, argv);
+    const Study study = load_study(a.study, a.overrides, known_keys);
+    StudyRunOptions options;
+    options.out = a.out;
+    options.isphdem = fs::read_symlink("/proc/self/exe");
+    options.jobs = a.jobs;
+    options.quiet = a.quiet;
+    if (!a.quiet) {
+      std::printf("isphdem study: %s: %zu points of %s, %d at a time, into %s\n",
+                  a.study.string().c_str(), study.points.size(), study.base.string().c_str(),
+                  a.jobs, a.out.string().c_str());
+      std::fflush(stdout);
+    }
+    fs::create_directories(a.out);
+    const auto outcomes = run_study(study, options);
+    write_study_table(a.out / "study.csv", study, outcomes);
+    plot(study, a.out, a.quiet);
+    std::map<std::string, int> count;
+    double wall = 0.0;
+    for (const auto& o : outcomes) {
+      ++count[o.status];
+      if (!o.earlier) wall += o.result.wall_seconds;
+    }
+    if (!a.quiet) {
+      std::string summary;
+      for (const auto& [status, n] : count)
+        summary += (summary.empty() ? "" : ", ") + std::to_string(n) + " " + status;
+      std::printf("done: %zu points (%s), %s of point wall time; %s\n", outcomes.size(),
+                  summary.c_str(), format_duration(wall).c_str(),
+                  (a.out / "study.csv").string().c_str());
+    }
+    return 0;
+  } catch (const CaseError& e) {
+    std::fprintf(stderr, "isphdem study: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "isphdem study: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace isphdem

@@ -1,0 +1,174 @@
+#include "study/study_runner.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <stdexcept>
+#include <thread>
+
+#include "io/progress_line.hpp"
+
+namespace isphdem {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+double now_seconds() {
+  using namespace std::chrono;
+  return duration<double>(steady_clock::now().time_since_epoch()).count();
+}
+
+std::string last_line(const fs::path& log) {
+  std::ifstream in(log);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
+  return last;
+}
+
+// Starts `isphdem run` for one point with its output going to DIR/log.txt. The child dies with
+// the study (PR_SET_PDEATHSIG), so a killed study leaves no orphan writing into its directories.
+pid_t start_point(const Study& study, const StudyPoint& p, const fs::path& dir,
+                  const StudyRunOptions& o, const std::string& threads) {
+  std::vector<std::string> args{o.isphdem.string(), "run", study.base.string(), "--out",
+                                dir.string()};
+  for (const auto& s : p.overrides) {
+    args.push_back("--set");
+    args.push_back(s);
+  }
+  const std::string log = (dir / "log.txt").string();
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("cannot start a process for point '" + p.name + "'");
+  if (pid > 0) return pid;
+  prctl(PR_SET_PDEATHSIG, SIGTERM);
+  if (getppid() != parent) _exit(127);  // the study died before prctl took hold
+  const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd < 0) _exit(126);
+  dup2(fd, STDOUT_FILENO);
+  dup2(fd, STDERR_FILENO);
+  close(fd);
+  if (!threads.empty()) setenv("OMP_NUM_THREADS", threads.c_str(), 1);
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  execv(argv[0], argv.data());
+  std::fprintf(stderr, "isphdem study: cannot run %s\n", argv[0]);
+  _exit(127);
+}
+
+PointOutcome outcome_of(const fs::path& dir, int wait_status) {
+  PointOutcome out;
+  const auto r = read_run_result(dir / run_result_file_name());
+  if (r) {
+    out.result = *r;
+    out.status = r->status;
+    out.message = r->message;
+    return out;
+  }
+  if (WIFSIGNALED(wait_status)) {
+    out.status = "killed";
+    out.message = std::string("signal ") + std::to_string(WTERMSIG(wait_status)) + " (" +
+                  strsignal(WTERMSIG(wait_status)) + ")";
+  } else {
+    out.status = "failed";
+    out.message = "exit status " + std::to_string(WEXITSTATUS(wait_status)) + ": " +
+                  last_line(dir / "log.txt");
+  }
+  return out;
+}
+
+std::string describe(const PointOutcome& o) {
+  std::string s = o.status;
+  if (o.status == "finished" || o.status == "stopped") {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, " in %s", format_duration(o.result.wall_seconds).c_str());
+    s += buf;
+    for (const auto& m : o.result.metrics) {
+      std::snprintf(buf, sizeof buf, ", %s %s%.3g%s", m.name.c_str(), m.error >= 0 ? "+" : "",
+                    m.relative ? 100 * m.error : m.error, m.relative ? "%" : "");
+      s += buf;
+    }
+  }
+  if (!o.message.empty()) s += ": " + o.message;
+  return s;
+}
+
+}  // namespace
+
+std::vector<PointOutcome> run_study(const Study& study, const StudyRunOptions& o) {
+  const std::size_t n = study.points.size();
+  std::vector<PointOutcome> outcomes(n);
+  std::vector<std::size_t> pending;
+  std::size_t done = 0;
+  auto say = [&](std::size_t k, const std::string& what) {
+    if (o.quiet) return;
+    std::printf("study: [%zu/%zu] %s: %s\n", done, n, study.points[k].name.c_str(), what.c_str());
+    std::fflush(stdout);
+  };
+  for (std::size_t k = 0; k < n; ++k) {
+    const fs::path dir = o.out / study.points[k].name;
+    const auto earlier = read_run_result(dir / run_result_file_name());
+    if (earlier && (earlier->status == "finished" || earlier->status == "stopped") &&
+        earlier->overrides == study.points[k].overrides) {
+      outcomes[k] = {earlier->status, earlier->message, true, *earlier};
+      ++done;
+      say(k, "done earlier (" + describe(outcomes[k]) + "), not run again");
+    } else {
+      pending.push_back(k);
+    }
+  }
+  // Each point gets an equal share of the cores unless the user chose OMP_NUM_THREADS.
+  std::string threads;
+  if (!std::getenv("OMP_NUM_THREADS")) {
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    threads = std::to_string(std::max(1u, cores / unsigned(std::max(1, o.jobs))));
+  }
+  std::map<pid_t, std::pair<std::size_t, double>> running;  // pid -> point, start time
+  double run_wall = 0.0;
+  std::size_t run_count = 0, next = 0;
+  while (next < pending.size() || !running.empty()) {
+    while (next < pending.size() && running.size() < std::size_t(std::max(1, o.jobs))) {
+      const std::size_t k = pending[next++];
+      const fs::path dir = o.out / study.points[k].name;
+      fs::create_directories(dir);
+      fs::remove(dir / run_result_file_name());
+      running[start_point(study, study.points[k], dir, o, threads)] = {k, now_seconds()};
+    }
+    int status = 0;
+    const pid_t pid = waitpid(-1, &status, 0);
+    if (pid < 0) {
+      if (errno == EINTR) continue;
+      throw std::runtime_error("lost track of the point processes (waitpid failed)");
+    }
+    const auto it = running.find(pid);
+    if (it == running.end()) continue;
+    const auto [k, started] = it->second;
+    running.erase(it);
+    outcomes[k] = outcome_of(o.out / study.points[k].name, status);
+    run_wall += now_seconds() - started;
+    ++run_count;
+    ++done;
+    std::string eta;
+    const std::size_t left = pending.size() - next + running.size();
+    if (left > 0) {
+      const double per_point = run_wall / double(run_count);
+      eta = " (" + std::to_string(running.size()) + " running, ETA " +
+            format_duration(per_point * double(left) / double(std::max(1, o.jobs))) + ")";
+    }
+    say(k, describe(outcomes[k]) + eta);
+  }
+  return outcomes;
+}
+
+}  // namespace isphdem

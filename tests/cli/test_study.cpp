@@ -1,0 +1,183 @@
+// `isphdem study` the way a user runs it: a grid of Taylor-Green resolutions whose amplitude
+// error must fall with refinement, a point that cannot run recorded without stopping the study,
+// a killed study resumed without rerunning what had finished, and bad study files stopped before
+// any point runs.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <thread>
+
+#include "cli_support.hpp"
+
+namespace isphdem::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+using Row = std::map<std::string, std::string>;
+
+std::vector<Row> read_csv(const fs::path& p) {
+  std::ifstream in(p);
+  std::string line;
+  std::vector<std::string> header;
+  std::vector<Row> rows;
+  auto split = [](const std::string& l) {
+    std::vector<std::string> f;
+    std::string cur;
+    bool quoted = false;
+    for (char c : l) {
+      if (c == '"')
+        quoted = !quoted;
+      else if (c == ',' && !quoted) {
+        f.push_back(cur);
+        cur.clear();
+      } else
+        cur += c;
+    }
+    f.push_back(cur);
+    return f;
+  };
+  if (std::getline(in, line)) header = split(line);
+  while (std::getline(in, line)) {
+    const auto f = split(line);
+    Row r;
+    for (std::size_t k = 0; k < header.size() && k < f.size(); ++k) r[header[k]] = f[k];
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+fs::path write_study(const fs::path& dir, const std::string& body) {
+  const fs::path f = dir / "study.toml";
+  write_file(f, "base = \"" + example("taylor_green_2d") + "\"\n" + body);
+  return f;
+}
+
+Result study(const std::string& args) { return run_shell(isphdem() + " study " + args); }
+
+std::string text_of(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(Study, ErrorFallsWithResolutionAndABadPointIsRecorded) {
+  const auto dir = scratch("study_grid");
+  const auto file = write_study(dir,
+                                "[set]\n\"time.end\" = 0.5\n\"output.interval\" = 0.5\n"
+                                "[grid]\n\"particles.spacing\" = [0.05, 0.025]\n"
+                                "[[points]]\nname = \"dt-too-large\"\n"
+                                "set = { \"particles.spacing\" = 0.05, \"time.dt\" = 0.1 }\n");
+  const Result r = study(file.string() + " --out " + (dir / "out").string() + " -j 2");
+  std::printf("%s", r.output.c_str());
+  ASSERT_EQ(r.exit_code, 0);
+  const auto rows = read_csv(dir / "out" / "study.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  std::map<std::string, Row> by_name;
+  for (const auto& row : rows) by_name[row.at("point")] = row;
+  const Row& coarse = by_name.at("spacing=0.05");
+  const Row& fine = by_name.at("spacing=0.025");
+  EXPECT_EQ(coarse.at("status"), "finished");
+  EXPECT_EQ(fine.at("status"), "finished");
+  const double e_coarse = std::stod(coarse.at("amplitude_error"));
+  const double e_fine = std::stod(fine.at("amplitude_error"));
+  std::printf("amplitude error: dx 0.05 %+.3f%%, dx 0.025 %+.3f%% (exact exp(-8 pi^2 nu t))\n",
+              100 * e_coarse, 100 * e_fine);
+  // Halving the spacing must cut the amplitude error (viscous damping of the discretisation).
+  EXPECT_LT(std::abs(e_fine), 0.6 * std::abs(e_coarse));
+  EXPECT_LT(std::abs(e_coarse), 0.05);
+  EXPECT_GT(std::stod(fine.at("wall_seconds")), std::stod(coarse.at("wall_seconds")));
+  EXPECT_EQ(std::stol(fine.at("particles")), 1600);
+  EXPECT_GT(std::stod(fine.at("ppe_iterations_per_step")), 0.0);
+  // The point whose time step is refused is recorded with the cause, and the study went on.
+  const Row& bad = by_name.at("dt-too-large");
+  EXPECT_EQ(bad.at("status"), "error");
+  EXPECT_NE(bad.at("message").find("time.dt = 0.1 s is beyond the stable limit"), std::string::npos)
+      << bad.at("message");
+  EXPECT_TRUE(fs::exists(dir / "out" / "dt-too-large" / "log.txt"));
+  // Each point keeps its resolved case and its log.
+  EXPECT_NE(text_of(dir / "out" / "spacing=0.025" / "case_used.toml").find("spacing = 0.025"),
+            std::string::npos);
+  EXPECT_NE(text_of(dir / "out" / "spacing=0.025" / "log.txt").find("reference amplitude"),
+            std::string::npos);
+  if (fs::exists("/usr/bin/python3")) {
+    EXPECT_TRUE(fs::exists(dir / "out" / "study.png"));
+  }
+}
+
+TEST(Study, KilledStudyResumesWithoutRerunningFinishedPoints) {
+  const auto dir = scratch("study_resume");
+  // One quick point, then one that takes a few times longer: the study is killed while the
+  // second runs.
+  const auto file =
+      write_study(dir,
+                  "[set]\n\"time.end\" = 0.5\n\"output.interval\" = 0.5\n"
+                  "[[points]]\nname = \"quick\"\nset = { \"particles.spacing\" = 0.05 }\n"
+                  "[[points]]\nname = \"slow\"\nset = { \"particles.spacing\" = 0.02 }\n");
+  const fs::path out = dir / "out";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const std::string log = (dir / "first.txt").string();
+    freopen(log.c_str(), "w", stdout);
+    execl(isphdem().c_str(), isphdem().c_str(), "study", file.c_str(), "--out", out.c_str(), "-j",
+          "1", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // Wait until the quick point has its result and the slow one has started.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!(fs::exists(out / "quick" / "result.json") && fs::exists(out / "slow" / "log.txt")) &&
+         std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_TRUE(fs::exists(out / "quick" / "result.json"));
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  // The running point died with the study (no orphan left writing), and has no result.
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  EXPECT_FALSE(fs::exists(out / "slow" / "result.json"));
+  EXPECT_FALSE(fs::exists(out / "study.csv"));
+  const auto quick_written = fs::last_write_time(out / "quick" / "result.json");
+
+  const Result r = study(file.string() + " --out " + out.string());
+  std::printf("%s", r.output.c_str());
+  ASSERT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.output.find("quick: done earlier"), std::string::npos);
+  EXPECT_EQ(count(r.output, "slow: finished"), 1);
+  EXPECT_EQ(fs::last_write_time(out / "quick" / "result.json"), quick_written);
+  const auto rows = read_csv(out / "study.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  for (const auto& row : rows) EXPECT_EQ(row.at("status"), "finished") << row.at("point");
+
+  // Changing a value reruns the point under the same name: its overrides no longer match.
+  const Result again = study(file.string() + " --out " + out.string() + " --set time.end=0.2");
+  EXPECT_EQ(count(again.output, "done earlier"), 0) << again.output;
+}
+
+TEST(Study, BadStudyFileStopsBeforeAnyPointRuns) {
+  const auto dir = scratch("study_bad");
+  const auto file = write_study(dir,
+                                "[grid]\n\"particles.spacing\" = [0.05, 0.025]\n"
+                                "\"solver.preconditoner\" = [\"ilu0\"]\n");
+  const Result r = study(file.string() + " --out " + (dir / "out").string());
+  std::printf("%s", r.output.c_str());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("'solver.preconditoner'"), std::string::npos);
+  EXPECT_NE(r.output.find("did you mean 'solver.preconditioner'"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  // Arguments too.
+  EXPECT_EQ(study(file.string()).exit_code, 2);
+  EXPECT_EQ(study(file.string() + " --out x -j 0").exit_code, 2);
+  const Result help = study("--help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.output.find("[grid]"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace isphdem::cli

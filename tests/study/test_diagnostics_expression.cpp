@@ -1,0 +1,99 @@
+// The formulas of [reference] metrics over diagnostics.csv columns: arithmetic as written,
+// reductions over the right rows, and errors that name what is wrong.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "study/diagnostics_expression.hpp"
+#include "study/diagnostics_table.hpp"
+
+namespace isphdem {
+namespace {
+
+DiagnosticsTable table() {
+  DiagnosticsTable t;
+  t.names = {"time", "speed", "energy"};
+  t.columns["time"] = {0.1, 0.2, 0.3, 0.4};
+  t.columns["speed"] = {1.0, 3.0, 2.0, 6.0};
+  t.columns["energy"] = {16.0, 8.0, 4.0, 2.0};
+  return t;
+}
+
+double eval(const std::string& text) { return DiagnosticsExpression(text).evaluate(table()); }
+
+TEST(DiagnosticsExpression, ArithmeticFollowsPrecedence) {
+  EXPECT_DOUBLE_EQ(eval("1 + 2 * 3"), 7.0);
+  EXPECT_DOUBLE_EQ(eval("(1 + 2) * 3"), 9.0);
+  EXPECT_DOUBLE_EQ(eval("2 ^ 3 ^ 2"), 512.0);  // right-associative
+  EXPECT_DOUBLE_EQ(eval("-2 ^ 2"), -4.0);      // as in mathematics
+  EXPECT_DOUBLE_EQ(eval("8 / 4 / 2"), 1.0);    // left-associative
+  EXPECT_DOUBLE_EQ(eval("1.5e2 - 50"), 100.0);
+  EXPECT_DOUBLE_EQ(eval("sqrt(16) + abs(-1) + max(2, 5) + min(2, 5)"), 12.0);
+  EXPECT_NEAR(eval("exp(log(3)) + log10(1000)"), 6.0, 1e-12);
+  EXPECT_NEAR(eval("pi"), M_PI, 0.0);
+}
+
+TEST(DiagnosticsExpression, ReductionsReadTheRightRows) {
+  EXPECT_DOUBLE_EQ(eval("first(speed)"), 1.0);
+  EXPECT_DOUBLE_EQ(eval("last(speed)"), 6.0);
+  EXPECT_DOUBLE_EQ(eval("max(speed)"), 6.0);
+  EXPECT_DOUBLE_EQ(eval("min(speed)"), 1.0);
+  EXPECT_DOUBLE_EQ(eval("mean(speed)"), 3.0);
+  EXPECT_DOUBLE_EQ(eval("at(speed, 0.25)"), 2.5);  // halfway between 3 and 2
+  EXPECT_DOUBLE_EQ(eval("at(speed, 0.0)"), 1.0);   // before the first row: the first
+  EXPECT_DOUBLE_EQ(eval("mean_after(speed, 0.3)"), 4.0);
+  EXPECT_DOUBLE_EQ(eval("max_after(speed, 0.15)"), 6.0);
+  EXPECT_DOUBLE_EQ(eval("min_after(energy, 0.15)"), 2.0);
+  EXPECT_DOUBLE_EQ(eval("sqrt(last(energy) / first(energy))"), std::sqrt(2.0 / 16.0));
+  EXPECT_DOUBLE_EQ(eval("max(last(speed), first(energy))"), 16.0);  // the two-number max
+}
+
+TEST(DiagnosticsExpression, ListsTheColumnsItReads) {
+  const DiagnosticsExpression e("last(speed) / at(energy, 0.2)");
+  EXPECT_EQ(e.columns(), (std::vector<std::string>{"energy", "speed", "time"}));
+}
+
+TEST(DiagnosticsExpression, SyntaxErrorsSayWhatWasExpectedWhere) {
+  auto message = [](const std::string& text) {
+    try {
+      DiagnosticsExpression e(text);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_NE(message("foo(speed)").find("not 'foo'"), std::string::npos) << message("foo(speed)");
+  EXPECT_NE(message("speed + 1").find("last(speed)"), std::string::npos);
+  EXPECT_NE(message("last(speed").find("')'"), std::string::npos);
+  EXPECT_NE(message("1 +").find("the end"), std::string::npos);
+  EXPECT_NE(message("at(speed)").find("',' and a time"), std::string::npos);
+  EXPECT_NE(message("sqrt(1, 2)").find("takes 1 argument"), std::string::npos);
+  EXPECT_NE(message("2 3").find("column 3"), std::string::npos);
+}
+
+TEST(DiagnosticsExpression, EvaluationErrorsNameTheColumn) {
+  try {
+    eval("last(sped)");
+    FAIL() << "no error for a missing column";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("no column 'sped'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("speed"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(eval("mean_after(speed, 1.0)"), std::runtime_error);  // no row after t = 1
+}
+
+TEST(DiagnosticsTable, ReadsWhatTheWriterWroteAndDropsACutLine) {
+  const auto path = std::filesystem::temp_directory_path() / "isphdem_diag_table.csv";
+  std::ofstream(path) << "time,step,max_speed\n0.1,1,2.5\n0.2,2,nan\n0.3,3,1e-3\n0.4,4";
+  const auto t = read_diagnostics(path);
+  ASSERT_EQ(t.rows(), 3u);
+  EXPECT_EQ(t.names, (std::vector<std::string>{"time", "step", "max_speed"}));
+  EXPECT_DOUBLE_EQ(t.columns.at("max_speed")[2], 1e-3);
+  EXPECT_TRUE(std::isnan(t.columns.at("max_speed")[1]));
+  std::filesystem::remove(path);
+  EXPECT_THROW(read_diagnostics(path), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace isphdem
