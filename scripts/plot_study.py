@@ -7,7 +7,13 @@ Points that stopped early (blow-up, CFL stop) are drawn as crosses at their wall
 lower edge, so that a method's failures show on the same chart; points that never ran are listed
 in the title.
 
+With --stability X Y it draws instead how every point ended over two varied keys (e.g.
+particles.spacing and time.cfl): finished points as dots, stopped ones (blow-up, CFL stop, NaN)
+as crosses, refused ones as squares, and the stability boundary between the largest finished and
+the smallest stopped Y at each X.
+
 usage: plot_study.py STUDY_CSV [-o PNG] [--metric NAME] [--series KEY] [--label KEY]
+       plot_study.py STUDY_CSV --stability X Y [-o PNG]
 """
 import argparse
 import csv
@@ -34,12 +40,15 @@ def main():
     ap.add_argument("--metric", default=None, help="a metric column of study.csv (default: the first)")
     ap.add_argument("--series", default=None)
     ap.add_argument("--label", default=None)
+    ap.add_argument("--stability", nargs=2, metavar=("X", "Y"), default=None)
     args = ap.parse_args()
     with open(args.table, newline="") as f:
         rows = list(csv.DictReader(f))
     if not rows:
         sys.exit(f"plot_study: {args.table} has no points")
     columns = list(rows[0].keys())
+    if args.stability:
+        return stability(args, rows, columns)
     metrics = [c[: -len("_error")] for c in columns if c.endswith("_error")]
     metric = args.metric or (metrics[0] if metrics else None)
     if metric is None:
@@ -84,6 +93,51 @@ def main():
     ax.legend(title=args.series, fontsize=8)
     fig.tight_layout()
     out = args.output or args.table.rsplit(".", 1)[0] + ".png"
+    fig.savefig(out, dpi=120)
+    print(f"plot_study: {out}")
+
+
+def stability(args, rows, columns):
+    xkey, ykey = args.stability
+    for key in (xkey, ykey):
+        if key not in columns:
+            sys.exit(f"plot_study: no column '{key}' in {args.table}")
+    fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    style = {"finished": ("o", "tab:green", "finished"), "stopped": ("x", "tab:red", "stopped"),
+             "error": ("s", "tab:gray", "refused at start")}
+    shown = set()
+    for r in rows:
+        x, y = number(r[xkey]), number(r[ykey])
+        if not (math.isfinite(x) and math.isfinite(y)):
+            continue
+        marker, color, label = style.get(r["status"], ("^", "black", r["status"]))
+        ax.plot([x], [y], marker, color=color, markersize=9,
+                label=None if label in shown else label)
+        shown.add(label)
+    # The boundary: at each X, between the largest Y that finished and the smallest that did not.
+    xs = sorted({number(r[xkey]) for r in rows})
+    bx, by = [], []
+    for x in xs:
+        at = [r for r in rows if number(r[xkey]) == x]
+        ok = [number(r[ykey]) for r in at if r["status"] == "finished"]
+        bad = [number(r[ykey]) for r in at if r["status"] != "finished"]
+        if ok and bad and max(ok) < min(bad):
+            bx.append(x)
+            by.append(math.sqrt(max(ok) * min(bad)) if max(ok) > 0 else 0.5 * min(bad))
+    if bx:
+        ax.plot(bx, by, "--", color="black", marker="_", markersize=24,
+                label="stability boundary")
+    for key, setter in ((xkey, ax.set_xscale), (ykey, ax.set_yscale)):
+        values = [number(r[key]) for r in rows]
+        if all(v > 0 for v in values) and max(values) / min(values) >= 4:
+            setter("log")
+    ax.set_xlabel(xkey)
+    ax.set_ylabel(ykey)
+    ax.set_title("how each point ended", fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    out = args.output or args.table.rsplit(".", 1)[0] + "_stability.png"
     fig.savefig(out, dpi=120)
     print(f"plot_study: {out}")
 

@@ -8,6 +8,8 @@
 #include <map>
 #include <stdexcept>
 
+#include "study/reference_formulas.hpp"
+
 namespace isphdem {
 
 namespace {
@@ -25,7 +27,14 @@ functions() {
         {"log", {1, [](const auto& a) { return std::log(a[0]); }}},
         {"log10", {1, [](const auto& a) { return std::log10(a[0]); }}},
         {"min", {2, [](const auto& a) { return std::min(a[0], a[1]); }}},
-        {"max", {2, [](const auto& a) { return std::max(a[0], a[1]); }}}};
+        {"max", {2, [](const auto& a) { return std::max(a[0], a[1]); }}},
+        {"stokes_velocity",
+         {5, [](const auto& a) { return stokes_velocity(a[0], a[1], a[2], a[3], a[4]); }}},
+        {"schiller_naumann_velocity",
+         {5,
+          [](const auto& a) { return schiller_naumann_velocity(a[0], a[1], a[2], a[3], a[4]); }}},
+        {"ergun_gradient",
+         {5, [](const auto& a) { return ergun_gradient(a[0], a[1], a[2], a[3], a[4]); }}}};
   return f;
 }
 

@@ -5,7 +5,9 @@
 //   exp(-8 * pi^2 * last(time) / 100)
 // Numbers, + - * / ^, parentheses, pi; sqrt abs exp log log10 min(a, b) max(a, b); and the
 // reductions of one column: first last min max mean (all rows), at(col, t) (interpolated in the
-// time column), mean_after(col, t), max_after(col, t), min_after(col, t).
+// time column), mean_after(col, t), max_after(col, t), min_after(col, t); and the analytic
+// references of reference_formulas.hpp: stokes_velocity(d, rho_p, rho_f, nu, g),
+// schiller_naumann_velocity(d, rho_p, rho_f, nu, g), ergun_gradient(eps, d, nu, rho, U).
 #include <string>
 #include <vector>
 

@@ -81,7 +81,7 @@ std::string quote(const std::string& s) {
 
 // study.png through scripts/plot_study.py when Debian's python3 with matplotlib is there; the
 // CSV is complete either way.
-void plot(const Study& study, const fs::path& out, bool quiet) {
+void plot(const Study& study, const fs::path& out, bool quiet, bool has_metrics) {
   const fs::path script = fs::path(ISPHDEM_SCRIPTS_DIR) / "plot_study.py";
   std::string cmd = "/usr/bin/python3 " + quote(script.string()) + " " +
                     quote((out / "study.csv").string()) + " -o " +
@@ -89,11 +89,26 @@ void plot(const Study& study, const fs::path& out, bool quiet) {
   if (!study.plot_metric.empty()) cmd += " --metric " + quote(study.plot_metric);
   if (!study.plot_series.empty()) cmd += " --series " + quote(study.plot_series);
   if (!study.plot_label.empty()) cmd += " --label " + quote(study.plot_label);
-  if (quiet) cmd += " > /dev/null";
-  if (!fs::exists("/usr/bin/python3") || !fs::exists(script) || std::system(cmd.c_str()) != 0)
-    std::fprintf(stderr,
-                 "isphdem study: study.png not drawn (needs /usr/bin/python3 with matplotlib: "
-                 "bash scripts/setup.sh); study.csv is complete\n");
+  std::vector<std::pair<std::string, std::string>> charts;
+  if (has_metrics)
+    charts.emplace_back("study.png", cmd);
+  else if (!quiet)
+    std::printf("isphdem study: no point reported a [reference] metric: no study.png\n");
+  if (!study.stability.empty())
+    charts.emplace_back("stability.png", "/usr/bin/python3 " + quote(script.string()) + " " +
+                                             quote((out / "study.csv").string()) + " -o " +
+                                             quote((out / "stability.png").string()) +
+                                             " --stability " + quote(study.stability[0]) + " " +
+                                             quote(study.stability[1]));
+  for (auto& [png, command] : charts) {
+    if (quiet) command += " > /dev/null";
+    if (!fs::exists("/usr/bin/python3") || !fs::exists(script) || std::system(command.c_str()) != 0)
+      std::fprintf(stderr,
+                   "isphdem study: %s not drawn (scripts/plot_study.py failed, or "
+                   "/usr/bin/python3 with matplotlib is missing: bash scripts/setup.sh); "
+                   "study.csv is complete\n",
+                   png.c_str());
+  }
 }
 
 }  // namespace
@@ -120,7 +135,9 @@ int study_main(int argc, char** argv, const std::vector<std::string>& known_keys
     fs::create_directories(a.out);
     const auto outcomes = run_study(study, options);
     write_study_table(a.out / "study.csv", study, outcomes);
-    plot(study, a.out, a.quiet);
+    bool has_metrics = false;
+    for (const auto& o : outcomes) has_metrics = has_metrics || !o.result.metrics.empty();
+    plot(study, a.out, a.quiet, has_metrics);
     std::map<std::string, int> count;
     double wall = 0.0;
     for (const auto& o : outcomes) {

@@ -31,6 +31,8 @@ const char* study_file_help() {
          "  metric = \"amplitude\"                     # a [reference] metric of the case\n"
          "  series = \"solver.preconditioner\"         # one line per value of this key\n"
          "  label = \"particles.spacing\"              # the value written beside each point\n"
+         "  stability = [\"particles.spacing\", \"time.cfl\"]  # stability.png: how each point\n"
+         "                                           # ended over two varied keys\n"
          "Keys are any case keys, written as for --set (quoted, or as dotted TOML keys). The\n"
          "metrics are the base case's [reference] metrics, computed by each run into its\n"
          "result.json.\n";
@@ -283,15 +285,25 @@ class StudyLoader {
     if (!t) throw CaseError("'plot' must be a table: [plot] with metric, series and label");
     for (const auto& [key, v] : *t) {
       const std::string k(key.str());
-      if (k != "metric" && k != "series" && k != "label")
+      if (k != "metric" && k != "series" && k != "label" && k != "stability")
         throw CaseError(here(v) + ": unknown key '" + k +
-                        "' in [plot]; it has metric, series and label");
-      if (!v.is_string()) throw CaseError(here(v) + ": [plot] " + k + " must be a string");
+                        "' in [plot]; it has metric, series, label and stability");
+      if (k == "stability") {
+        const auto* arr = v.as_array();
+        if (!arr || arr->size() != 2 || !(*arr)[0].is_string() || !(*arr)[1].is_string())
+          throw CaseError(here(v) +
+                          ": [plot] stability must be two varied keys, [\"x.key\", \"y.key\"]");
+        for (const auto& el : *arr) study_.stability.push_back(*el.value<std::string>());
+      } else if (!v.is_string()) {
+        throw CaseError(here(v) + ": [plot] " + k + " must be a string");
+      }
     }
     study_.plot_metric = (*t)["metric"].value_or(std::string());
     study_.plot_series = (*t)["series"].value_or(std::string());
     study_.plot_label = (*t)["label"].value_or(std::string());
-    for (const auto* k : {&study_.plot_series, &study_.plot_label})
+    std::vector<const std::string*> keys{&study_.plot_series, &study_.plot_label};
+    for (const auto& k : study_.stability) keys.push_back(&k);
+    for (const auto* k : keys)
       if (!k->empty() &&
           std::find(study_.varied.begin(), study_.varied.end(), *k) == study_.varied.end())
         throw CaseError("[plot] '" + *k +

@@ -21,9 +21,10 @@ struct Study {
   std::filesystem::path base;       // the case every point starts from (absolute)
   std::vector<std::string> varied;  // every key some point sets, in order
   std::vector<StudyPoint> points;
-  std::string plot_metric;  // [plot] metric: empty = the first metric
-  std::string plot_series;  // [plot] series: one line per value of this key
-  std::string plot_label;   // [plot] label: the key whose value labels each point
+  std::string plot_metric;             // [plot] metric: empty = the first metric
+  std::string plot_series;             // [plot] series: one line per value of this key
+  std::string plot_label;              // [plot] label: the key whose value labels each point
+  std::vector<std::string> stability;  // [plot] stability = [x, y]: stability.png over two keys
 };
 
 // The format, for `isphdem study --help` (docs/study.md has the same with examples).

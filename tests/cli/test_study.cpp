@@ -73,7 +73,8 @@ TEST(Study, ErrorFallsWithResolutionAndABadPointIsRecorded) {
                                 "[set]\n\"time.end\" = 0.5\n\"output.interval\" = 0.5\n"
                                 "[grid]\n\"particles.spacing\" = [0.05, 0.025]\n"
                                 "[[points]]\nname = \"dt-too-large\"\n"
-                                "set = { \"particles.spacing\" = 0.05, \"time.dt\" = 0.1 }\n");
+                                "set = { \"particles.spacing\" = 0.05, \"time.dt\" = 0.1 }\n"
+                                "[plot]\nstability = [\"particles.spacing\", \"time.dt\"]\n");
   const Result r = study(file.string() + " --out " + (dir / "out").string() + " -j 2");
   std::printf("%s", r.output.c_str());
   ASSERT_EQ(r.exit_code, 0);
@@ -108,6 +109,7 @@ TEST(Study, ErrorFallsWithResolutionAndABadPointIsRecorded) {
             std::string::npos);
   if (fs::exists("/usr/bin/python3")) {
     EXPECT_TRUE(fs::exists(dir / "out" / "study.png"));
+    EXPECT_TRUE(fs::exists(dir / "out" / "stability.png"));
   }
 }
 

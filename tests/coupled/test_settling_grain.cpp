@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "coupled_case.hpp"
+#include "study/reference_formulas.hpp"
 #include "unresolved/drag_law.hpp"
 
 namespace isphdem::coupled_test {
@@ -17,15 +18,10 @@ namespace {
 
 constexpr double kD = 1e-3, kRhoS = 2600, kRho = 1000, kNu = 1e-6, kG = 9.81;
 
-// Schiller-Naumann terminal velocity: (rho_s - rho) g V = C_d(Re) (pi d^2 / 8) rho v^2.
+// The analytic reference [reference] metrics use (study/reference_formulas.hpp), written
+// independently of the drag law under test.
 double schiller_naumann_terminal_velocity() {
-  double lo = 1e-4, hi = 1.0;
-  for (int k = 0; k < 200; ++k) {
-    const double v = 0.5 * (lo + hi);
-    const double drag = wen_yu_drag_coefficient(kD * v / kNu) * M_PI * kD * kD / 8 * kRho * v * v;
-    (drag > (kRhoS - kRho) * kG * M_PI / 6 * kD * kD * kD ? hi : lo) = v;
-  }
-  return 0.5 * (lo + hi);
+  return schiller_naumann_velocity(kD, kRhoS, kRho, kNu, kG);
 }
 
 // What the seed's law itself gives for a grain falling at v through still water of porosity

@@ -49,6 +49,26 @@ TEST(DiagnosticsExpression, ReductionsReadTheRightRows) {
   EXPECT_DOUBLE_EQ(eval("max(last(speed), first(energy))"), 16.0);  // the two-number max
 }
 
+// The analytic references against values computed by hand and the textbook table.
+TEST(ReferenceFormulas, TerminalVelocitiesAndErgun) {
+  // 0.1 mm quartz in water: Re = 0.87, Stokes (1600 * 9.81 * 1e-8 / 18e-3 m/s).
+  EXPECT_NEAR(eval("stokes_velocity(1e-4, 2600, 1000, 1e-6, 9.81)"), 8.72e-3, 1e-5);
+  // At Re << 1 Schiller-Naumann tends to Stokes; 1 mm sand: 0.152 m/s (Re ~ 150).
+  EXPECT_NEAR(eval("schiller_naumann_velocity(1e-5, 2600, 1000, 1e-6, 9.81) / "
+                   "stokes_velocity(1e-5, 2600, 1000, 1e-6, 9.81)"),
+              1.0, 0.01);
+  EXPECT_NEAR(eval("schiller_naumann_velocity(1e-3, 2600, 1000, 1e-6, 9.81)"), 0.152, 0.002);
+  // The drag at that velocity balances the buoyant weight.
+  const double v = eval("schiller_naumann_velocity(1e-3, 2600, 1000, 1e-6, 9.81)");
+  const double re = 1e-3 * v / 1e-6;
+  const double cd = 24 / re * (1 + 0.15 * std::pow(re, 0.687));
+  EXPECT_NEAR(cd * M_PI * 1e-6 / 8 * 1000 * v * v, 1600 * 9.81 * M_PI * 1e-9 / 6, 1e-12);
+  // Ergun at eps = 0.4, d = 1 mm, U = 1 mm/s in water: 150*1e-3*0.36*1e-3/(0.064*1e-6) +
+  // 1.75*1000*0.6*1e-6/(0.064*1e-3) = 843.75 + 16.40625 Pa/m.
+  EXPECT_NEAR(eval("ergun_gradient(0.4, 1e-3, 1e-6, 1000, 1e-3)"), 860.15625, 1e-9);
+  EXPECT_THROW(eval("schiller_naumann_velocity(1e-3, 900, 1000, 1e-6, 9.81)"), std::runtime_error);
+}
+
 TEST(DiagnosticsExpression, ListsTheColumnsItReads) {
   const DiagnosticsExpression e("last(speed) / at(energy, 0.2)");
   EXPECT_EQ(e.columns(), (std::vector<std::string>{"energy", "speed", "time"}));
