@@ -14,6 +14,7 @@
 #include "case/case_file.hpp"
 #include "case/fluid_scene.hpp"
 #include "case/run_settings.hpp"
+#include "case/verb_arguments.hpp"
 #include "dem/dem_case_config.hpp"
 #include "dem/dem_liggghts_backend.hpp"
 #include "dem/dem_run_case.hpp"
@@ -50,48 +51,12 @@ void print_ppe_cost(const isph::IsphSolver<Dim>& solver) {
 
 const char* kUsage =
     "usage: isphdem run CASE.toml --out DIR [--set key=value ...] [--quiet]\n"
-    "  --out DIR        output directory (snap_<step>.h5, fluid.xdmf, diagnostics.csv,\n"
-    "                   result.json);\n"
+    "  --out DIR        output directory (snap_<step>.h5, *.xdmf, diagnostics.csv, result.json);\n"
     "                   results of an earlier run there are replaced\n"
     "  --set key=value  override a case key, e.g. --set time.end=0.2 (repeatable)\n"
     "  --quiet          no progress line and no summary\n";
 
-struct Arguments {
-  fs::path case_file;
-  fs::path out;
-  std::vector<std::string> overrides;
-  bool quiet = false;
-};
-
-Arguments parse_arguments(int argc, char** argv) {
-  Arguments a;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&](const char* what) -> std::string {
-      if (i + 1 >= argc) throw CaseError(std::string(what) + " needs a value\n" + kUsage);
-      return argv[++i];
-    };
-    if (arg == "--out")
-      a.out = value("--out");
-    else if (arg == "--set")
-      a.overrides.push_back(value("--set"));
-    else if (arg.rfind("--set=", 0) == 0)
-      a.overrides.push_back(arg.substr(6));
-    else if (arg == "--quiet")
-      a.quiet = true;
-    else if (arg.rfind("-", 0) == 0)
-      throw CaseError("unknown option '" + arg + "'\n" + kUsage);
-    else if (a.case_file.empty())
-      a.case_file = arg;
-    else
-      throw CaseError("more than one case file given ('" + a.case_file.string() + "', '" + arg +
-                      "')");
-  }
-  if (a.case_file.empty()) throw CaseError(std::string("no case file given\n") + kUsage);
-  if (a.out.empty())
-    throw CaseError(std::string("no output directory given (--out DIR)\n") + kUsage);
-  return a;
-}
+using Arguments = VerbArguments;
 
 // Advances `run` (FluidRun or CoupledRun) to settings.t_end with each output time as a landing
 // point, so snapshots fall on t = k * interval. A SimulationError stops the run: the progress
@@ -412,8 +377,8 @@ int run_main(int argc, char** argv) {
     return 2;
   };
   try {
-    args = parse_arguments(argc, argv);
-    const CaseFile c = CaseFile::load(args.case_file, args.overrides, case_keys());
+    args = parse_verb_arguments(argc, argv, "case file", kUsage);
+    const CaseFile c = CaseFile::load(args.file, args.overrides, case_keys());
     report = std::make_unique<RunReport>(c, args.overrides, args.out);
     const bool has_dem = c.has("dem"), has_fluid = c.has("fluid");
     if (c.has("unresolved") && !(has_dem && has_fluid))

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "case/case_file.hpp"
+#include "case/verb_arguments.hpp"
 #include "io/progress_line.hpp"
 #include "study/study_file.hpp"
 #include "study/study_runner.hpp"
@@ -29,47 +30,24 @@ const char* kUsage =
     "  --quiet          no line per point\n";
 
 struct Arguments {
-  fs::path study;
-  fs::path out;
+  VerbArguments verb;  // the study file, --out, --set, --quiet
   int jobs = 1;
-  std::vector<std::string> overrides;
-  bool quiet = false;
 };
 
 Arguments parse(int argc, char** argv) {
   Arguments a;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&](const char* what) -> std::string {
-      if (i + 1 >= argc) throw CaseError(std::string(what) + " needs a value\n" + kUsage);
-      return argv[++i];
-    };
-    if (arg == "--out") {
-      a.out = value("--out");
-    } else if (arg == "-j" || arg.rfind("-j", 0) == 0) {
-      const std::string n = arg == "-j" ? value("-j") : arg.substr(2);
-      char* end = nullptr;
-      const long j = std::strtol(n.c_str(), &end, 10);
-      if (n.empty() || *end || j < 1 || j > 256)
-        throw CaseError("-j '" + n + "': give the number of points to run at once, e.g. -j 2");
-      a.jobs = int(j);
-    } else if (arg == "--set") {
-      a.overrides.push_back(value("--set"));
-    } else if (arg.rfind("--set=", 0) == 0) {
-      a.overrides.push_back(arg.substr(6));
-    } else if (arg == "--quiet") {
-      a.quiet = true;
-    } else if (arg.rfind("-", 0) == 0) {
-      throw CaseError("unknown option '" + arg + "'\n" + kUsage);
-    } else if (a.study.empty()) {
-      a.study = arg;
-    } else {
-      throw CaseError("more than one study file given ('" + a.study.string() + "', '" + arg + "')");
-    }
-  }
-  if (a.study.empty()) throw CaseError(std::string("no study file given\n") + kUsage);
-  if (a.out.empty())
-    throw CaseError(std::string("no output directory given (--out DIR)\n") + kUsage);
+  a.verb = parse_verb_arguments(
+      argc, argv, "study file", kUsage,
+      [&](const std::string& arg, const std::function<std::string()>& value) {
+        if (arg.rfind("-j", 0) != 0) return false;
+        const std::string n = arg == "-j" ? value() : arg.substr(2);
+        char* end = nullptr;
+        const long j = std::strtol(n.c_str(), &end, 10);
+        if (n.empty() || *end || j < 1 || j > 256)
+          throw CaseError("-j '" + n + "': give the number of points to run at once, e.g. -j 2");
+        a.jobs = int(j);
+        return true;
+      });
   return a;
 }
 
@@ -119,17 +97,18 @@ int study_main(int argc, char** argv, const std::vector<std::string>& known_keys
     return 0;
   }
   try {
-    const Arguments a = parse(argc, argv);
-    const Study study = load_study(a.study, a.overrides, known_keys);
+    const Arguments args = parse(argc, argv);
+    const VerbArguments& a = args.verb;
+    const Study study = load_study(a.file, a.overrides, known_keys);
     StudyRunOptions options;
     options.out = a.out;
     options.isphdem = fs::read_symlink("/proc/self/exe");
-    options.jobs = a.jobs;
+    options.jobs = args.jobs;
     options.quiet = a.quiet;
     if (!a.quiet) {
       std::printf("isphdem study: %s: %zu points of %s, %d at a time, into %s\n",
-                  a.study.string().c_str(), study.points.size(), study.base.string().c_str(),
-                  a.jobs, a.out.string().c_str());
+                  a.file.string().c_str(), study.points.size(), study.base.string().c_str(),
+                  args.jobs, a.out.string().c_str());
       std::fflush(stdout);
     }
     fs::create_directories(a.out);
