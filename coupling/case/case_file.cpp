@@ -136,6 +136,12 @@ CaseFile CaseFile::load(const fs::path& path, const std::vector<std::string>& ov
   return c;
 }
 
+CaseFile CaseFile::with_override(const std::string& assignment) const {
+  CaseFile c = *this;
+  apply_override(c.table_, assignment);
+  return c;
+}
+
 toml::node_view<const toml::node> CaseFile::node(const std::string& key) const {
   return table_.at_path(key);
 }

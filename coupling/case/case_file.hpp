@@ -26,6 +26,8 @@ class CaseFile {
                        const std::vector<std::string>& known_keys);
 
   const toml::table& table() const { return table_; }
+  // A copy with one more override ("key=value" as for --set), e.g. the model "auto" chose.
+  CaseFile with_override(const std::string& assignment) const;
   const std::filesystem::path& path() const { return path_; }
   std::filesystem::path directory() const { return path_.parent_path(); }
   bool has(const std::string& key) const;

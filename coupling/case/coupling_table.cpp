@@ -3,17 +3,38 @@
 namespace isphdem {
 
 std::vector<std::string> coupling_keys() {
-  return {"coupling.model", "coupling.slab_thickness", "coupling.pms_shape", "coupling.pms_volume",
-          "coupling.pms_overlap"};
+  return {"coupling.model",
+          "coupling.slab_thickness",
+          "coupling.pms_shape",
+          "coupling.pms_volume",
+          "coupling.pms_overlap",
+          "coupling.auto.resolve_above",
+          "coupling.auto.unresolve_below"};
 }
 
 std::string coupling_model(const CaseFile& c) {
   const std::string m = c.string("coupling.model", "unresolved");
-  if (m != "unresolved" && m != "semi-resolved" && m != "resolved")
+  if (m != "unresolved" && m != "semi-resolved" && m != "resolved" && m != "auto")
     throw CaseError(
-        "'coupling.model' must be \"unresolved\", \"semi-resolved\" or \"resolved\" (got \"" + m +
-        "\")");
+        "'coupling.model' must be \"unresolved\", \"semi-resolved\", \"resolved\" or \"auto\" "
+        "(got \"" +
+        m + "\")");
   return m;
+}
+
+// Defaults: unresolved drag is validated up to d/dx = 1 (the settling grain, docs/study.md and
+// docs/unresolved.md), PMS bodies from D/dx = 4.8 (the 3D Archimedes clump) to 10 (the cylinder,
+// docs/resolved.md); below about 3 particles across, a PMS body loses its shape. Between 1 and
+// 3 neither model is measured yet: auto says so and keeps such a class unresolved.
+AutoThresholds auto_thresholds(const CaseFile& c) {
+  AutoThresholds t;
+  t.resolve_above = c.positive("coupling.auto.resolve_above", t.resolve_above);
+  t.unresolve_below = c.positive("coupling.auto.unresolve_below", t.unresolve_below);
+  if (t.unresolve_below > t.resolve_above)
+    throw CaseError("'coupling.auto.unresolve_below' (" + std::to_string(t.unresolve_below) +
+                    ") is above 'coupling.auto.resolve_above' (" + std::to_string(t.resolve_above) +
+                    "): it must not be");
+  return t;
 }
 
 double slab_thickness(const CaseFile& c) {

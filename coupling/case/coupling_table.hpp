@@ -5,6 +5,9 @@
 //   model = "unresolved"       # every grain unresolved, clump spheres too (default)
 //         | "semi-resolved"    # clumps resolved by PMS particles, free spheres unresolved
 //         | "resolved"         # clumps resolved, no porosity/drag stage
+//         | "auto"             # per grain class from d/dx at start (run/auto_model.hpp)
+//   auto.resolve_above = 3.0   # "auto": a class with d/dx at or above this is resolved
+//   auto.unresolve_below = 1.0 # "auto": below this unresolved drag holds; between, a warning
 //   slab_thickness = 1e-3      # quasi-2D: DEM slab thickness T [m] (alias unresolved.slab_thickness)
 //   pms_shape = "auto"         # "lattice" | "per_sphere" | "auto"
 //   pms_volume = "dem"         # "dem" | "particles"
@@ -22,8 +25,17 @@ namespace isphdem {
 
 std::vector<std::string> coupling_keys();
 
-// coupling.model, checked: "unresolved" (the default), "semi-resolved" or "resolved".
+// coupling.model, checked: "unresolved" (the default), "semi-resolved", "resolved" or "auto".
+// "auto" is replaced by one of the others when the run starts (CaseFile::with_override), so
+// the stages never see it.
 std::string coupling_model(const CaseFile& c);
+
+// The d/dx thresholds of coupling.model = "auto" (docs/study.md, "Choosing the model").
+struct AutoThresholds {
+  double resolve_above = 3.0;
+  double unresolve_below = 1.0;
+};
+AutoThresholds auto_thresholds(const CaseFile& c);
 
 // The quasi-2D DEM slab thickness T [m], one value for both stages; the older key
 // unresolved.slab_thickness still works. Throws CaseError when neither or both are set.

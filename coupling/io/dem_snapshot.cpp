@@ -9,7 +9,8 @@ Vec3 lookup(const std::map<int, Vec3>& m, int key) {
 }
 }  // namespace
 
-void add_dem_groups(const DemState& state, const HydroLoads& loads, Snapshot& snapshot) {
+void add_dem_groups(const DemState& state, const HydroLoads& loads, Snapshot& snapshot,
+                    const GrainModels* models) {
   const auto& A = state.atoms;
   Group& dem = snapshot.group("dem");
   const std::size_t m = A.size();
@@ -26,6 +27,10 @@ void add_dem_groups(const DemState& state, const HydroLoads& loads, Snapshot& sn
   dem.add_generated<double>("force_hydro", m, 3, [&](std::size_t i, std::size_t c) {
     return lookup(loads.atom_force, A[i].tag)[c];
   });
+  if (models)
+    dem.add_generated<int64_t>("model", m, 1, [&](std::size_t i, std::size_t) {
+      return int64_t(A[i].body >= 0 ? models->clumps : models->free_spheres);
+    });
 
   const auto& B = state.bodies;
   Group& bodies = snapshot.group("bodies");

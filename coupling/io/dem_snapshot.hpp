@@ -13,6 +13,15 @@ struct HydroLoads {
   std::map<int, Vec3> body_force, body_torque;
 };
 
-void add_dem_groups(const DemState& state, const HydroLoads& loads, Snapshot& snapshot);
+// /dem/model per atom, by whether it belongs to a clump: 1 resolved (PMS particles), 0
+// unresolved (porosity and drag), -1 not coupled (free spheres under coupling.model =
+// "resolved").
+struct GrainModels {
+  int clumps = 0, free_spheres = 0;
+};
+
+// `models`: write /dem/model (coupled runs); none for a DEM-only run.
+void add_dem_groups(const DemState& state, const HydroLoads& loads, Snapshot& snapshot,
+                    const GrainModels* models = nullptr);
 
 }  // namespace isphdem

@@ -14,6 +14,8 @@ std::vector<std::unique_ptr<CouplingStage<Dim>>> make_coupling_stages(const Case
   std::vector<std::unique_ptr<CouplingStage<Dim>>> stages;
   const double h = scene.config.smoothing_ratio * scene.particles.spacing;
   const std::string model = coupling_model(c);
+  if (model == "auto")  // run_coupled puts the model auto chose into the case first
+    throw CaseError("coupling.model = \"auto\" must be resolved from the grains before the stages");
   if (model != "resolved")
     stages.push_back(make_unresolved_coupling<Dim>(c, h, scene.config.viscosity));
   if (model != "unresolved") stages.push_back(make_resolved_coupling<Dim>(c, scene));

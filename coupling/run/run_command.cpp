@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "case/case_file.hpp"
+#include "case/coupling_table.hpp"
 #include "case/fluid_scene.hpp"
 #include "case/run_settings.hpp"
 #include "case/verb_arguments.hpp"
@@ -23,6 +24,7 @@
 #include "io/fluid_snapshot.hpp"
 #include "io/progress_line.hpp"
 #include "io/snapshot_writer.hpp"
+#include "run/auto_model.hpp"
 #include "run/case_keys.hpp"
 #include "run/coupled_run.hpp"
 #include "run/coupling_stages.hpp"
@@ -199,19 +201,25 @@ DemCaseConfig dem_config(const CaseFile& c) {
 // A case with [fluid] and [dem]: fine grains (free spheres) coupled unresolved. The fluid is
 // replicated on every rank (the DEM state is gathered to all); rank 0 writes the output.
 template <int Dim>
-int run_coupled(const CaseFile& c, const Arguments& args, RunReport& report) {
+int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   const bool talk = rank == 0 && !args.quiet;
-  const RunSettings settings = parse_run_settings(c);
-  const DemCaseConfig dem = dem_config(c);
+  const RunSettings settings = parse_run_settings(given);
+  const DemCaseConfig dem = dem_config(given);
   // Checked here as well as in CoupledRun so that it stops before LIGGGHTS writes its screen.
   if (!settings.fixed_dt)
     throw CaseError(
         "a coupled case needs a fixed fluid step: set time.dt = [dem] substeps x the "
         "script's DEM timestep (not \"auto\")");
-  FluidScene<Dim> scene = build_fluid_scene<Dim>(c);
-  auto stages = make_coupling_stages<Dim>(c, scene, settings.fixed_dt.value_or(0.0));
+  FluidScene<Dim> scene = build_fluid_scene<Dim>(given);
+  const double dt = settings.fixed_dt.value_or(0.0), dx = scene.particles.spacing;
+  // Built before LIGGGHTS starts, so that a bad coupling key stops the run first; "auto" needs
+  // the grains, so its stages come after.
+  const bool choose = coupling_model(given) == "auto";
+  const AutoThresholds thresholds = choose ? auto_thresholds(given) : AutoThresholds{};
+  std::vector<std::unique_ptr<CouplingStage<Dim>>> stages;
+  if (!choose) stages = make_coupling_stages<Dim>(given, scene, dt);
   Vec3 up{0.0, 0.0, 0.0};
   {
     isph::Vec<Dim> g = scene.config.gravity;
@@ -221,6 +229,16 @@ int run_coupled(const CaseFile& c, const Arguments& args, RunReport& report) {
   if (rank == 0) fs::create_directories(args.out);
   LiggghtsBackend backend(dem.liggghts_args(args.out));
   backend.initialize({dem.script, {}});
+  std::vector<std::string> auto_lines;
+  const CaseFile c = [&] {
+    if (!choose) return given;
+    const AutoChoice a = choose_model(backend.state(), dx, thresholds);
+    auto_lines.push_back("coupling.model = \"auto\" -> \"" + a.model + "\"");
+    for (const auto& g : a.classes) auto_lines.push_back("  " + describe(g, dx));
+    return given.with_override("coupling.model=\"" + a.model + "\"");
+  }();
+  if (choose) stages = make_coupling_stages<Dim>(c, scene, dt);
+  const GrainModels models = grain_models(coupling_model(c));
   CoupledRun<Dim> run(std::move(scene), settings, backend, dem.substeps, std::move(stages));
   auto& solver = run.solver();
   const auto& P = solver.particles();
@@ -235,6 +253,7 @@ int run_coupled(const CaseFile& c, const Arguments& args, RunReport& report) {
         c.path().string().c_str(), Dim, P.count(isph::kFluid), P.count(isph::kWall), P.spacing,
         dem.script.string().c_str(), backend.state().atoms.size(), run.dt(), run.substeps(),
         backend.timestep(), args.out.string().c_str(), settings.output_interval, settings.t_end);
+    for (const auto& line : auto_lines) std::printf("  %s\n", line.c_str());
     std::fflush(stdout);
   }
   // Grain density for the mass of ejected fines: that of the clumps when there are any (the
@@ -286,7 +305,7 @@ int run_coupled(const CaseFile& c, const Arguments& args, RunReport& report) {
       hydro.body_force[l.body_ids[k]] = l.body_force[k];
       hydro.body_torque[l.body_ids[k]] = l.body_torque[k];
     }
-    add_dem_groups(state, hydro, s);
+    add_dem_groups(state, hydro, s, &models);
     writer->write(s);
   };
   const double start = omp_get_wtime();
