@@ -4,7 +4,7 @@
 //   [coupling]
 //   model = "unresolved"       # every grain unresolved, clump spheres too (default)
 //         | "semi-resolved"    # clumps resolved by PMS particles, free spheres unresolved
-//         | "resolved"         # clumps resolved, no porosity/drag stage
+//         | "resolved"         # clumps and free spheres resolved, no porosity/drag stage
 //         | "auto"             # per grain class from d/dx at start (run/auto_model.hpp)
 //   auto.resolve_above = 3.0   # "auto": a class with d/dx at or above this is resolved
 //   auto.unresolve_below = 1.0 # "auto": below this unresolved drag holds; between, a warning

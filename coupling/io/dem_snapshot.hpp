@@ -14,8 +14,7 @@ struct HydroLoads {
 };
 
 // /dem/model per atom, by whether it belongs to a clump: 1 resolved (PMS particles), 0
-// unresolved (porosity and drag), -1 not coupled (free spheres under coupling.model =
-// "resolved").
+// unresolved (porosity and drag).
 struct GrainModels {
   int clumps = 0, free_spheres = 0;
 };

@@ -21,6 +21,7 @@ std::unique_ptr<ResolvedCoupling<Dim>> make_resolved_coupling(const CaseFile& c,
     throw CaseError("'coupling.pms_volume' must be \"dem\" or \"particles\"");
   s.dem_volume = volume == "dem";
   s.overlap = c.positive("coupling.pms_overlap", s.overlap);
+  s.free_spheres = coupling_model(c) == "resolved";
   return std::make_unique<ResolvedCoupling<Dim>>(s);
 }
 

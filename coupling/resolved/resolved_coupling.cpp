@@ -43,12 +43,36 @@ ResolvedCoupling<Dim>::ResolvedCoupling(const ResolvedSettings& settings) : sett
 }
 
 template <int Dim>
+std::string ResolvedCoupling<Dim>::name_of(int body_id) {
+  return body_id < 0 ? "free sphere (atom " + std::to_string(-body_id) + ")"
+                     : "multisphere body " + std::to_string(body_id);
+}
+
+template <int Dim>
+std::vector<DemBody> ResolvedCoupling<Dim>::resolved_bodies(const DemState& dem) const {
+  std::vector<DemBody> bodies = dem.bodies;
+  if (!settings_.free_spheres) return bodies;
+  for (const auto& a : dem.atoms) {
+    if (a.body != -1) continue;
+    DemBody b;
+    b.id = -a.tag;
+    b.x = a.x;
+    b.v = a.v;
+    b.omega = a.omega;
+    b.volume = 4.0 / 3.0 * M_PI * a.radius * a.radius * a.radius;
+    b.members = {a.tag};
+    bodies.push_back(std::move(b));
+  }
+  return bodies;
+}
+
+template <int Dim>
 int ResolvedCoupling<Dim>::index_of(int body_id) const {
   const auto it = index_.find(body_id);
   if (it == index_.end())
-    throw std::runtime_error("resolved coupling: multisphere body " + std::to_string(body_id) +
-                             " did not exist when the coupling started; bodies inserted later "
-                             "are not resolved yet: insert all clumps before the coupled run");
+    throw std::runtime_error("resolved coupling: " + name_of(body_id) +
+                             " did not exist when the coupling started; grains inserted later "
+                             "are not resolved yet: insert all grains before the coupled run");
   return it->second;
 }
 
@@ -60,7 +84,7 @@ isph::RigidPose<Dim> ResolvedCoupling<Dim>::pose(const DemBody& body) const {
   // matter, and in 2D the relative rotation is one about z.
   const Eigen::Matrix3d rel = rotation_of(body.quat) * initial_rotation_[b].transpose();
   if (Dim == 2 && std::abs(rel(2, 2) - 1.0) > 1e-6)
-    throw std::runtime_error("resolved coupling: multisphere body " + std::to_string(body.id) +
+    throw std::runtime_error("resolved coupling: " + name_of(body.id) +
                              " rotated out of the x-y plane (cos = " + num(rel(2, 2)) +
                              "): a 2D fluid needs planar clumps; add 'fix ID all couple/isph "
                              "planar z Z0' to the LIGGGHTS script");
@@ -95,18 +119,18 @@ void ResolvedCoupling<Dim>::initialize(const DemState& dem, isph::IsphSolver<Dim
   for (const auto& a : dem.atoms) atom_by_tag[a.tag] = &a;
   PmsGenerationSettings gen{dx, settings_.slab_thickness, settings_.shape};
   const auto& domain = solver.domain();
+  const std::vector<DemBody> bodies = resolved_bodies(dem);
 
-  std::vector<std::vector<DemAtom>> members_of(dem.bodies.size());
-  std::vector<std::vector<isph::Vec<Dim>>> positions(dem.bodies.size());
-  for (std::size_t bi = 0; bi < dem.bodies.size(); ++bi) {
-    const DemBody& body = dem.bodies[bi];
+  std::vector<std::vector<DemAtom>> members_of(bodies.size());
+  std::vector<std::vector<isph::Vec<Dim>>> positions(bodies.size());
+  for (std::size_t bi = 0; bi < bodies.size(); ++bi) {
+    const DemBody& body = bodies[bi];
     std::vector<DemAtom>& members = members_of[bi];
     for (int tag : body.members) {
       const auto it = atom_by_tag.find(tag);
       if (it == atom_by_tag.end())
         throw std::invalid_argument("resolved coupling: member atom " + std::to_string(tag) +
-                                    " of multisphere body " + std::to_string(body.id) +
-                                    " is missing from the DEM state");
+                                    " of " + name_of(body.id) + " is missing from the DEM state");
       members.push_back(*it->second);
     }
     // The fluid lattice node nearest to the body: PMS particles are put on the same lattice.
@@ -124,21 +148,20 @@ void ResolvedCoupling<Dim>::initialize(const DemState& dem, isph::IsphSolver<Dim
     positions[bi] = generate_pms_particles<Dim>(body, members, gen, origin);
   }
   const std::size_t shared =
-      remove_shared_pms_nodes<Dim>(positions, dem.bodies, members_of, domain, dx);
+      remove_shared_pms_nodes<Dim>(positions, bodies, members_of, domain, dx);
   if (shared > 0)
     std::printf(
         "resolved coupling: %zu PMS particles dropped where touching bodies took the same "
         "lattice node\n",
         shared);
 
-  for (std::size_t bi = 0; bi < dem.bodies.size(); ++bi) {
-    const DemBody& body = dem.bodies[bi];
+  for (std::size_t bi = 0; bi < bodies.size(); ++bi) {
+    const DemBody& body = bodies[bi];
     const std::vector<isph::Vec<Dim>>& x = positions[bi];
     const isph::Vec<Dim> cm = in_plane<Dim>(body.x);
     for (const auto& xi : x)
       if (!domain.contains(xi))
-        throw std::invalid_argument("resolved coupling: multisphere body " +
-                                    std::to_string(body.id) +
+        throw std::invalid_argument("resolved coupling: " + name_of(body.id) +
                                     " reaches outside the fluid domain: move it inside or "
                                     "enlarge domain.min/domain.max");
 
@@ -162,9 +185,9 @@ void ResolvedCoupling<Dim>::initialize(const DemState& dem, isph::IsphSolver<Dim
         if (domain.min_image(P.x[i] - xi).squaredNorm() >= limit * limit) continue;
         if (P.kind[i] == isph::kWall) {
           std::ostringstream s;
-          s << "resolved coupling: multisphere body " << body.id
-            << " overlaps the wall particle at (" << P.x[i].transpose()
-            << "): start the clump at least half a spacing (" << 0.5 * dx << " m) from walls";
+          s << "resolved coupling: " << name_of(body.id) << " overlaps the wall particle at ("
+            << P.x[i].transpose() << "): start the clump at least half a spacing (" << 0.5 * dx
+            << " m) from walls";
           throw std::invalid_argument(s.str());
         }
         drop[i] = 1;
@@ -194,36 +217,39 @@ void ResolvedCoupling<Dim>::initialize(const DemState& dem, isph::IsphSolver<Dim
     info.scale = Dim == 2 ? settings_.slab_thickness : 1.0;
     if (settings_.dem_volume) {
       if (!(body.volume > 0.0))
-        throw std::invalid_argument("resolved coupling: multisphere body " +
-                                    std::to_string(body.id) + " has volume " + num(body.volume) +
+        throw std::invalid_argument("resolved coupling: " + name_of(body.id) + " has volume " +
+                                    num(body.volume) +
                                     ": give the particle template a volume (use_volume), or set "
                                     "coupling.pms_volume = \"particles\"");
       info.scale *= body.volume / info.fluid_volume;
     }
     info_.push_back(info);
-    std::printf(
-        "resolved coupling: body %d: %zu PMS particles, solid volume seen by the fluid %.6g m^3 "
-        "= %.4f x the DEM volume\n",
-        body.id, x.size(), info.fluid_volume,
-        body.volume > 0.0 ? info.fluid_volume / body.volume : 0.0);
+    if (body.id >= 0)  // one line per clump; fines may be thousands
+      std::printf(
+          "resolved coupling: body %d: %zu PMS particles, solid volume seen by the fluid %.6g "
+          "m^3 = %.4f x the DEM volume\n",
+          body.id, x.size(), info.fluid_volume,
+          body.volume > 0.0 ? info.fluid_volume / body.volume : 0.0);
   }
+  if (bodies.size() > dem.bodies.size())
+    std::printf("resolved coupling: %zu free spheres resolved, %zu PMS particles in all\n",
+                bodies.size() - dem.bodies.size(), P.count(isph::kSolid));
 }
 
 template <int Dim>
 void ResolvedCoupling<Dim>::before_fluid_step(const DemState& dem, isph::IsphSolver<Dim>& solver) {
   std::vector<isph::RigidPose<Dim>> poses(info_.size());
   std::vector<uint8_t> seen(info_.size(), 0);
-  for (const DemBody& body : dem.bodies) {
+  for (const DemBody& body : resolved_bodies(dem)) {
     const int b = index_of(body.id);
     poses[b] = pose(body);
     seen[b] = 1;
   }
   for (std::size_t b = 0; b < info_.size(); ++b)
     if (!seen[b])
-      throw std::runtime_error("resolved coupling: multisphere body " +
-                               std::to_string(info_[b].id) +
+      throw std::runtime_error("resolved coupling: " + name_of(info_[b].id) +
                                " vanished from the DEM state (deleted or left the DEM domain); "
-                               "keep clumps inside the DEM box");
+                               "keep grains inside the DEM box");
   isph::place_rigid_solids(solver.particles(), solver.domain(), poses);
 }
 
@@ -236,7 +262,7 @@ void ResolvedCoupling<Dim>::after_fluid_step(const DemState& dem,
   // neutral L-shaped clump by 0.03 rad in 0.5 s. For a uniform body the DEM's centre of mass is
   // its centroid, so the lever arms are those of the DEM body.
   std::vector<isph::Vec<Dim>> centres(info_.size(), isph::Vec<Dim>::Zero());
-  for (const DemBody& body : dem.bodies) {
+  for (const DemBody& body : resolved_bodies(dem)) {
     const int b = index_of(body.id);
     centres[b] = in_plane<Dim>(body.x) + pose(body).rotation * centroid_offset_[b];
   }
@@ -249,6 +275,12 @@ void ResolvedCoupling<Dim>::after_fluid_step(const DemState& dem,
       t[2] = scale * sums[b].torque[0];
     else
       for (int k = 0; k < 3; ++k) t[k] = scale * sums[b].torque[k];
+    if (info_[b].id < 0) {  // a free sphere: its atom takes the load
+      loads.atom_tags.push_back(-info_[b].id);
+      loads.atom_force.push_back(f);
+      loads.atom_torque.push_back(t);
+      continue;
+    }
     loads.body_ids.push_back(info_[b].id);
     loads.body_force.push_back(f);
     loads.body_torque.push_back(t);

@@ -5,7 +5,8 @@
 //   (on the fluid lattice these are exactly the nodes the solids take).
 // before_fluid_step: every PMS particle is put at its body's pose with v = v_cm + omega x r.
 // after_fluid_step: per body, the sum of the particles' fluid forces and their moments about the
-//   centre of mass (sph/rigid_solids.hpp) go to DemLoads.body_*; in 2D the per-unit-depth loads
+//   centre of mass (sph/rigid_solids.hpp) go to DemLoads.body_* (for a resolved free sphere to
+//   DemLoads.atom_*, by its tag); in 2D the per-unit-depth loads
 //   are multiplied by the slab thickness T. Nothing else is scaled, so what the fluid gives is
 //   what the bodies receive.
 //
@@ -36,6 +37,10 @@ struct ResolvedSettings {
   // lattice can only match V_b to half a particle, and a per-sphere clump not at all. Off: each
   // particle stands for dx^Dim (x T). (coupling.pms_volume = "dem" | "particles")
   bool dem_volume = true;
+  // Free spheres (fines) resolved too, each a rigid body of its own whose loads go to its atom
+  // (force and torque by tag); off, only multisphere clumps are resolved. (coupling.model =
+  // "resolved" turns it on.)
+  bool free_spheres = false;
 };
 
 template <int Dim>
@@ -63,8 +68,13 @@ class ResolvedCoupling : public CouplingStage<Dim> {
   // The pose of a DEM body in the fluid's frame (2D: its x-y plane, rotation about z).
   isph::RigidPose<Dim> pose(const DemBody& body) const;
 
+  // The bodies this stage resolves: the clumps, and with free_spheres each free sphere as a body
+  // of id -tag (a sphere needs no orientation: its pose rotates its velocity field only).
+  std::vector<DemBody> resolved_bodies(const DemState& dem) const;
+
  private:
   int index_of(int body_id) const;
+  static std::string name_of(int body_id);
 
   ResolvedSettings settings_;
   std::vector<BodyInfo> info_;

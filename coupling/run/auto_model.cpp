@@ -11,7 +11,7 @@ namespace {
 
 // Classes are told apart by size to 0.1%: the grains of one LIGGGHTS template share it exactly,
 // a polydisperse insertion gives a class per size.
-long size_key(double d) { return std::lround(std::log(d) * 1000.0); }
+long size_key(double d) { return d > 0 ? std::lround(std::log(d) * 1000.0) : 0; }
 
 }  // namespace
 
@@ -51,24 +51,40 @@ AutoChoice choose_model(const DemState& state, double dx, const AutoThresholds& 
   }
   // One run resolves all clumps or none: the stages work per model, not per class.
   for (auto& [key, g] : clumps) {
+    const double r = g.diameter / dx;
     if (any_clump_resolved && !g.resolved)
       g.note = "resolved with the larger clumps (one model for all clumps), although d/dx < " +
-               std::to_string(t.resolve_above);
+               std::to_string(t.resolve_above).substr(0, 4);
+    else if (!any_clump_resolved && r > t.unresolve_below)
+      g.note = "between the validated ranges (unresolved up to d/dx " +
+               std::to_string(t.unresolve_below).substr(0, 4) + ", resolved from " +
+               std::to_string(t.resolve_above).substr(0, 4) + ")";
     g.resolved = any_clump_resolved;
     choice.classes.push_back(g);
   }
+  // Free spheres are resolved when every class of them is large enough and no clump class
+  // stays unresolved ("resolved" resolves all grains).
+  bool spheres_resolved = !spheres.empty() && (clumps.empty() || any_clump_resolved);
+  for (const auto& [key, g] : spheres)
+    spheres_resolved = spheres_resolved && g.diameter / dx >= t.resolve_above;
   for (auto& [key, g] : spheres) {
     const double r = g.diameter / dx;
-    if (r >= t.resolve_above)
-      g.note = "would be resolved, but single spheres are not resolved by PMS yet";
-    else if (r > t.unresolve_below)
+    g.resolved = spheres_resolved;
+    if (r >= t.resolve_above && !spheres_resolved)
+      g.note = "left unresolved with the " +
+               std::string(any_clump_resolved || clumps.empty() ? "smaller free spheres"
+                                                                : "unresolved clumps") +
+               " (one model for all free spheres)";
+    else if (r < t.resolve_above && r > t.unresolve_below)
       g.note = "between the validated ranges (unresolved up to d/dx " +
                std::to_string(t.unresolve_below).substr(0, 4) + ", resolved from " +
                std::to_string(t.resolve_above).substr(0, 4) + ")";
     choice.classes.push_back(g);
   }
-  const bool free_spheres = !spheres.empty();
-  choice.model = !any_clump_resolved ? "unresolved" : free_spheres ? "semi-resolved" : "resolved";
+  if (spheres_resolved || (any_clump_resolved && spheres.empty()))
+    choice.model = "resolved";
+  else
+    choice.model = any_clump_resolved ? "semi-resolved" : "unresolved";
   return choice;
 }
 
@@ -85,7 +101,7 @@ std::string describe(const GrainClass& g, double dx) {
 
 GrainModels grain_models(const std::string& model) {
   if (model == "semi-resolved") return {1, 0};
-  if (model == "resolved") return {1, -1};
+  if (model == "resolved") return {1, 1};
   return {0, 0};
 }
 

@@ -2,9 +2,9 @@
 // coupling.model = "auto": at start, every grain class (clumps of one volume, free spheres of
 // one radius) is resolved or left unresolved by its diameter over the fluid spacing, d/dx
 // (thresholds in case/coupling_table.hpp). The classes' choices are then one of the fixed
-// models: clumps resolved with free spheres -> "semi-resolved", without -> "resolved"; clumps
-// unresolved -> "unresolved". Free spheres stay unresolved: resolving single spheres by PMS is
-// not built yet (a class that would need it gets a warning).
+// models: everything resolved (clumps alone, or every free-sphere class above the threshold
+// too) -> "resolved"; clumps resolved and free spheres not -> "semi-resolved"; clumps not
+// resolved -> "unresolved". A class that the one model per kind overrules gets a note.
 #include <string>
 #include <vector>
 

@@ -31,15 +31,14 @@ int run_dem_only(const CaseFile& c, const fs::path& out, bool quiet, RunReport& 
     throw CaseError(e.what());
   }
   const RunSettings settings = parse_run_settings(c);
+  const std::vector<std::string> columns{"time",      "step",  "wall_seconds", "ppe_iterations",
+                                         "max_speed", "atoms", "bodies"};
+  report.check_columns(columns);  // every rank, before anything in `out` is replaced
   std::unique_ptr<SnapshotWriter> writer;
   std::unique_ptr<DiagnosticsWriter> diagnostics;
   if (rank == 0) {
     writer = std::make_unique<SnapshotWriter>(out);
-    diagnostics = std::make_unique<DiagnosticsWriter>(
-        out / "diagnostics.csv",
-        std::vector<std::string>{"time", "step", "wall_seconds", "ppe_iterations", "max_speed",
-                                 "atoms", "bodies"});
-    report.check_columns(diagnostics->columns());
+    diagnostics = std::make_unique<DiagnosticsWriter>(out / "diagnostics.csv", columns);
     if (!quiet)
       std::printf("isphdem run: %s (DEM only: %s, %d substeps per chunk) to t = %g s\n",
                   c.path().string().c_str(), dem.script.string().c_str(), dem.substeps,
@@ -51,14 +50,19 @@ int run_dem_only(const CaseFile& c, const fs::path& out, bool quiet, RunReport& 
   DemRunOptions options;
   options.out_dir = out;
   options.fluid_dt = settings.fixed_dt;
+  double t_reached = 0.0;
+  long chunks = 0, atoms = 0;
   options.after_chunk = [&](DemBackend& backend, long chunk) {
     const double t = chunk * dem.substeps * backend.timestep();
+    t_reached = t;
+    chunks = chunk;
     const bool last = t >= settings.t_end * (1.0 - 1e-12);
     if (t < next_output * (1.0 - 1e-9) && !last) {
       if (rank == 0) progress.update(t, chunk);
       return;
     }
     const DemState state = backend.state();  // collective
+    atoms = long(state.atoms.size());
     while (next_output <= t * (1.0 + 1e-9)) next_output += settings.output_interval;
     if (rank != 0) return;
     Snapshot snap;
@@ -81,6 +85,8 @@ int run_dem_only(const CaseFile& c, const fs::path& out, bool quiet, RunReport& 
     throw CaseError(e.what());
   }
   progress.finish();
+  // Steps are DEM chunks of dem.substeps; no pressure solve.
+  report.cost(t_reached, chunks, atoms, omp_get_wtime() - start, 0);
   if (rank == 0 && !quiet)
     std::printf("done: DEM-only run in %s wall\n",
                 format_duration(omp_get_wtime() - start).c_str());

@@ -32,6 +32,7 @@
 #include "run/erosion_diagnostics.hpp"
 #include "run/fluid_run.hpp"
 #include "run/run_report.hpp"
+#include "study/run_result.hpp"
 #include "unresolved/unresolved_coupling.hpp"
 
 namespace isphdem {
@@ -111,17 +112,18 @@ int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
     std::fflush(stdout);
   }
 
+  const std::vector<std::string> columns{
+      "time",           "step",         "wall_seconds",      "ppe_iterations",
+      "max_speed",      "dt",           "ppe_residual",      "surface_particles",
+      "kinetic_energy", "fluid_volume", "max_eddy_viscosity"};
+  report.check_columns(columns);  // before the writer clears an earlier run's output
   SnapshotWriter writer(args.out);
   // The case as run, overrides applied, next to the results.
   {
     std::ofstream f(args.out / "case_used.toml");
     f << "# " << c.path().string() << " with the overrides of this run\n" << c.table() << "\n";
   }
-  DiagnosticsWriter diagnostics(
-      args.out / "diagnostics.csv",
-      {"time", "step", "wall_seconds", "ppe_iterations", "max_speed", "dt", "ppe_residual",
-       "surface_particles", "kinetic_energy", "fluid_volume", "max_eddy_viscosity"});
-  report.check_columns(diagnostics.columns());
+  DiagnosticsWriter diagnostics(args.out / "diagnostics.csv", columns);
   auto snapshot = [&]() {
     Snapshot s;
     s.step = solver.steps();
@@ -226,6 +228,25 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     if (g.norm() == 0.0) g[Dim - 1] = -1.0;
     for (int a = 0; a < Dim; ++a) up[a] = -g[a] / g.norm();
   }
+  // Checked on every rank before LIGGGHTS starts and before anything in OUT is replaced.
+  std::vector<std::string> columns{"time",
+                                   "step",
+                                   "wall_seconds",
+                                   "ppe_iterations",
+                                   "max_speed",
+                                   "dt",
+                                   "atoms",
+                                   "bed_height",
+                                   "max_grain_speed",
+                                   "min_porosity",
+                                   "floored_porosity",
+                                   "drag_total_up",
+                                   "fluid_resistance_up",
+                                   "dem_seconds",
+                                   "coupling_seconds",
+                                   "fluid_seconds"};
+  for (const auto& e : ErosionDiagnostics<Dim>::columns()) columns.push_back(e);
+  report.check_columns(columns);
   if (rank == 0) fs::create_directories(args.out);
   LiggghtsBackend backend(dem.liggghts_args(args.out));
   backend.initialize({dem.script, {}});
@@ -270,25 +291,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     writer = std::make_unique<SnapshotWriter>(args.out);
     std::ofstream f(args.out / "case_used.toml");
     f << "# " << c.path().string() << " with the overrides of this run\n" << c.table() << "\n";
-    std::vector<std::string> columns{"time",
-                                     "step",
-                                     "wall_seconds",
-                                     "ppe_iterations",
-                                     "max_speed",
-                                     "dt",
-                                     "atoms",
-                                     "bed_height",
-                                     "max_grain_speed",
-                                     "min_porosity",
-                                     "floored_porosity",
-                                     "drag_total_up",
-                                     "fluid_resistance_up",
-                                     "dem_seconds",
-                                     "coupling_seconds",
-                                     "fluid_seconds"};
-    for (const auto& e : ErosionDiagnostics<Dim>::columns()) columns.push_back(e);
     diagnostics = std::make_unique<DiagnosticsWriter>(args.out / "diagnostics.csv", columns);
-    report.check_columns(columns);
   }
   auto snapshot = [&]() {
     const DemState& state = backend.state();  // collective
@@ -391,12 +394,18 @@ int run_main(int argc, char** argv) {
     std::fprintf(stderr, "isphdem run: %s\n", e.what());
     if (report && rank == 0) {
       report->error(e.what());
-      report->finish(false);
+      try {
+        report->finish(false);
+      } catch (const std::exception& w) {
+        std::fprintf(stderr, "isphdem run: %s\n", w.what());
+      }
     }
     return 2;
   };
   try {
     args = parse_verb_arguments(argc, argv, "case file", kUsage);
+    // A result.json never outlives the run it describes, also when this one stops at its input.
+    if (rank == 0) remove_run_result(args.out);
     const CaseFile c = CaseFile::load(args.file, args.overrides, case_keys());
     report = std::make_unique<RunReport>(c, args.overrides, args.out);
     const bool has_dem = c.has("dem"), has_fluid = c.has("fluid");

@@ -13,8 +13,8 @@ RunReport::RunReport(const CaseFile& c, std::vector<std::string> overrides, fs::
     : metrics_(parse_reference(c)), out_(std::move(out)) {
   result_.status = "finished";
   result_.overrides = std::move(overrides);
-  std::error_code ec;
-  fs::remove(out_ / run_result_file_name(), ec);
+  result_.case_file = c.path().string();
+  result_.case_fingerprint = case_fingerprint(c.path());
 }
 
 void RunReport::check_columns(const std::vector<std::string>& columns) const {

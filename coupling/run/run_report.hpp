@@ -13,8 +13,8 @@ namespace isphdem {
 
 class RunReport {
  public:
-  // Parses [reference] (CaseError for a bad formula, before anything runs) and removes a
-  // result.json an earlier run left in `out`, so that one never outlives the run it describes.
+  // Parses [reference] (CaseError for a bad formula, before anything runs). run_main has removed
+  // the result.json of an earlier run in `out` already.
   RunReport(const CaseFile& c, std::vector<std::string> overrides, std::filesystem::path out);
 
   // CaseError before the first step when a metric reads a column this run does not write.

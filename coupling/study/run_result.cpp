@@ -1,6 +1,8 @@
 #include "study/run_result.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -23,6 +25,25 @@ double number(const json& j, const char* key) {
 
 std::string run_result_file_name() { return "result.json"; }
 
+void remove_run_result(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::remove(dir / run_result_file_name(), ec);
+}
+
+std::string case_fingerprint(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return "";
+  std::uint64_t h = 1469598103934665603ull;
+  char c;
+  while (in.get(c)) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 1099511628211ull;
+  }
+  char buf[20];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
 void write_run_result(const std::filesystem::path& file, const RunResult& r) {
   json metrics = json::array();
   for (const auto& m : r.metrics)
@@ -34,6 +55,8 @@ void write_run_result(const std::filesystem::path& file, const RunResult& r) {
   const json j = {{"status", r.status},
                   {"message", r.message},
                   {"overrides", r.overrides},
+                  {"case_file", r.case_file},
+                  {"case_fingerprint", r.case_fingerprint},
                   {"time", number(r.time)},
                   {"steps", r.steps},
                   {"particles", r.particles},
@@ -41,8 +64,18 @@ void write_run_result(const std::filesystem::path& file, const RunResult& r) {
                   {"particle_steps_per_second", number(r.particle_steps_per_second)},
                   {"ppe_iterations_per_step", number(r.ppe_iterations_per_step)},
                   {"metrics", metrics}};
-  write_file_atomically(file, j.dump(2) + "\n");
+  // A message with bytes that are not UTF-8 (a path, LIGGGHTS's words) must not lose the file.
+  write_file_atomically(file, j.dump(2, ' ', false, json::error_handler_t::replace) + "\n");
 }
+
+namespace {
+
+std::string text(const json& j, const char* key) {
+  const auto it = j.find(key);
+  return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+}  // namespace
 
 std::optional<RunResult> read_run_result(const std::filesystem::path& file) {
   std::ifstream in(file);
@@ -52,25 +85,27 @@ std::optional<RunResult> read_run_result(const std::filesystem::path& file) {
     return std::nullopt;
   RunResult r;
   r.status = j["status"].get<std::string>();
-  r.message = j.value("message", "");
+  r.message = text(j, "message");
+  r.case_file = text(j, "case_file");
+  r.case_fingerprint = text(j, "case_fingerprint");
   if (j.contains("overrides") && j["overrides"].is_array())
     for (const auto& o : j["overrides"])
       if (o.is_string()) r.overrides.push_back(o.get<std::string>());
   r.time = number(j, "time");
-  r.steps = j.value("steps", 0L);
-  r.particles = j.value("particles", 0L);
+  r.steps = std::isfinite(number(j, "steps")) ? long(number(j, "steps")) : 0;
+  r.particles = std::isfinite(number(j, "particles")) ? long(number(j, "particles")) : 0;
   r.wall_seconds = number(j, "wall_seconds");
   r.particle_steps_per_second = number(j, "particle_steps_per_second");
   r.ppe_iterations_per_step = number(j, "ppe_iterations_per_step");
   if (j.contains("metrics") && j["metrics"].is_array())
     for (const auto& m : j["metrics"]) {
-      if (!m.is_object() || !m.contains("name")) continue;
+      if (!m.is_object() || text(m, "name").empty()) continue;
       MetricResult x;
-      x.name = m.value("name", "");
+      x.name = text(m, "name");
       x.value = number(m, "value");
       x.expected = number(m, "expected");
       x.error = number(m, "error");
-      x.relative = m.value("error_kind", "relative") == "relative";
+      x.relative = text(m, "error_kind") != "absolute";
       r.metrics.push_back(x);
     }
   return r;

@@ -17,6 +17,8 @@ struct RunResult {
   std::string status;
   std::string message;                 // the error, for "stopped" and "error"
   std::vector<std::string> overrides;  // the --set values of the run, in order
+  std::string case_file;               // the case file, absolute
+  std::string case_fingerprint;        // of its text (case_fingerprint()): an edit shows
   double time = 0.0;                   // simulated time reached [s]
   long steps = 0;                      // fluid steps (DEM chunks for a DEM-only case)
   long particles = 0;                  // fluid + wall particles
@@ -28,10 +30,18 @@ struct RunResult {
 
 std::string run_result_file_name();  // "result.json"
 
+// DIR/result.json removed, if there is one (a run starting, a study point restarting).
+void remove_run_result(const std::filesystem::path& dir);
+
+// A fingerprint of a file's bytes (FNV-1a, 64 bit, hex); empty when it cannot be read. The
+// study compares it to tell a point run from an edited base case.
+std::string case_fingerprint(const std::filesystem::path& file);
+
 // Throws std::runtime_error naming the file when it cannot be written (the old file stays).
 void write_run_result(const std::filesystem::path& file, const RunResult& result);
 
-// Nothing when the file is missing or is not a result.json (an interrupted copy, say).
+// Nothing when the file is missing or is not a result.json (an interrupted copy, a field of the
+// wrong type).
 std::optional<RunResult> read_run_result(const std::filesystem::path& file);
 
 }  // namespace isphdem

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "case/case_file.hpp"
+#include "study/reference_metrics.hpp"
 
 namespace isphdem {
 
@@ -166,6 +167,7 @@ class StudyLoader {
                       ": the study has no points: add [grid] with key = [values, ...] or "
                       "[[points]] with set = { key = value }");
     unique_names();
+    check_extra();
     plot();
     for (const auto& p : study_.points) check_point(p);
     return study_;
@@ -264,6 +266,11 @@ class StudyLoader {
       if (t.contains("name") && !t["name"].is_string())
         throw CaseError(here(t) + ": " + where + ".name must be a string");
       const std::string name = t["name"].value_or(std::string());
+      static const std::set<std::string> reserved{".", "..", "study.csv", "study.png",
+                                                  "stability.png"};
+      if (reserved.count(name))
+        throw CaseError(here(t) + ": " + where + ".name '" + name +
+                        "' would not be a point's own directory under --out: choose another");
       for (char c : name)
         if (!(std::isalnum(static_cast<unsigned char>(c)) ||
               std::string("._-=+").find(c) != std::string::npos))
@@ -274,9 +281,23 @@ class StudyLoader {
   }
 
   void unique_names() {
-    std::map<std::string, int> seen;
-    for (auto& p : study_.points)
-      if (++seen[p.name] > 1) p.name += "-" + std::to_string(seen[p.name]);
+    std::set<std::string> taken;
+    for (auto& p : study_.points) {
+      const std::string wanted = p.name;
+      for (int k = 2; !taken.insert(p.name).second; ++k) p.name = wanted + "-" + std::to_string(k);
+    }
+  }
+
+  // --set on the study reaches every point, so it must not also be a key the study varies: it
+  // would make the points the same.
+  void check_extra() const {
+    for (const auto& e : extra_) {
+      const std::string key = e.substr(0, e.find('='));
+      if (std::find(study_.varied.begin(), study_.varied.end(), key) != study_.varied.end())
+        throw CaseError("--set " + e + ": '" + key +
+                        "' is a key the study varies; --set would make every point the same "
+                        "(change [grid] or [[points]] instead)");
+    }
   }
 
   void plot() {
@@ -299,6 +320,14 @@ class StudyLoader {
       }
     }
     study_.plot_metric = (*t)["metric"].value_or(std::string());
+    if (!study_.plot_metric.empty()) {
+      std::vector<std::string> names;
+      for (const auto& m : parse_reference(base_case_)) names.push_back(m.name);
+      if (std::find(names.begin(), names.end(), study_.plot_metric) == names.end())
+        throw CaseError("[plot] metric '" + study_.plot_metric +
+                        "' is not a [reference] metric of the base case (it has: " +
+                        (names.empty() ? std::string("none") : join(names)) + ")");
+    }
     study_.plot_series = (*t)["series"].value_or(std::string());
     study_.plot_label = (*t)["label"].value_or(std::string());
     std::vector<const std::string*> keys{&study_.plot_series, &study_.plot_label};
@@ -319,7 +348,7 @@ class StudyLoader {
   // The point's case as `isphdem run` would load it: unknown keys, keys that cannot be set.
   void check_point(const StudyPoint& p) const {
     try {
-      CaseFile::load(study_.base, p.overrides, known_);
+      parse_reference(CaseFile::load(study_.base, p.overrides, known_));
     } catch (const CaseError& e) {
       throw CaseError("point '" + p.name + "': " + e.what());
     }
@@ -328,8 +357,8 @@ class StudyLoader {
   Study study_;
   toml::table root_;
   CaseFile base_case_;
-  const std::vector<std::string>& extra_;
-  const std::vector<std::string>& known_;
+  std::vector<std::string> extra_;
+  std::vector<std::string> known_;
 };
 
 }  // namespace

@@ -6,10 +6,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <stdexcept>
@@ -47,6 +50,15 @@ pid_t start_point(const Study& study, const StudyPoint& p, const fs::path& dir,
     args.push_back(s);
   }
   const std::string log = (dir / "log.txt").string();
+  std::vector<char*> argv;  // built before fork: the child only calls async-signal-safe functions
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const std::string omp = "OMP_NUM_THREADS=" + threads;
+  std::vector<char*> env;
+  for (char** e = environ; *e; ++e)
+    if (threads.empty() || std::strncmp(*e, "OMP_NUM_THREADS=", 16) != 0) env.push_back(*e);
+  if (!threads.empty()) env.push_back(const_cast<char*>(omp.c_str()));
+  env.push_back(nullptr);
   const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("cannot start a process for point '" + p.name + "'");
@@ -58,12 +70,9 @@ pid_t start_point(const Study& study, const StudyPoint& p, const fs::path& dir,
   dup2(fd, STDOUT_FILENO);
   dup2(fd, STDERR_FILENO);
   close(fd);
-  if (!threads.empty()) setenv("OMP_NUM_THREADS", threads.c_str(), 1);
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  execv(argv[0], argv.data());
-  std::fprintf(stderr, "isphdem study: cannot run %s\n", argv[0]);
+  execve(argv[0], argv.data(), env.data());
+  static const char kFailed[] = "isphdem study: cannot start isphdem run\n";
+  [[maybe_unused]] const auto written = write(STDERR_FILENO, kFailed, sizeof kFailed - 1);
   _exit(127);
 }
 
@@ -116,11 +125,14 @@ std::vector<PointOutcome> run_study(const Study& study, const StudyRunOptions& o
     std::printf("study: [%zu/%zu] %s: %s\n", done, n, study.points[k].name.c_str(), what.c_str());
     std::fflush(stdout);
   };
+  // A point is the same as before when its case file, that file's text and its overrides are.
+  const std::string fingerprint = case_fingerprint(study.base);
   for (std::size_t k = 0; k < n; ++k) {
     const fs::path dir = o.out / study.points[k].name;
     const auto earlier = read_run_result(dir / run_result_file_name());
     if (earlier && (earlier->status == "finished" || earlier->status == "stopped") &&
-        earlier->overrides == study.points[k].overrides) {
+        earlier->overrides == study.points[k].overrides &&
+        earlier->case_file == study.base.string() && earlier->case_fingerprint == fingerprint) {
       outcomes[k] = {earlier->status, earlier->message, true, *earlier};
       ++done;
       say(k, "done earlier (" + describe(outcomes[k]) + "), not run again");
@@ -142,7 +154,7 @@ std::vector<PointOutcome> run_study(const Study& study, const StudyRunOptions& o
       const std::size_t k = pending[next++];
       const fs::path dir = o.out / study.points[k].name;
       fs::create_directories(dir);
-      fs::remove(dir / run_result_file_name());
+      remove_run_result(dir);
       running[start_point(study, study.points[k], dir, o, threads)] = {k, now_seconds()};
     }
     int status = 0;

@@ -141,8 +141,19 @@ TEST(Study, KilledStudyResumesWithoutRerunningFinishedPoints) {
   kill(pid, SIGKILL);
   int status = 0;
   waitpid(pid, &status, 0);
-  // The running point died with the study (no orphan left writing), and has no result.
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  // The running point died with the study: no process runs it any more (its output directory
+  // is on no command line in /proc), and it left no result.
+  auto running = [&] {
+    for (const auto& p : fs::directory_iterator("/proc")) {
+      std::ifstream cmd(p.path() / "cmdline");
+      std::string line((std::istreambuf_iterator<char>(cmd)), {});
+      if (line.find((out / "slow").string()) != std::string::npos) return true;
+    }
+    return false;
+  };
+  for (int k = 0; k < 100 && running(); ++k)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  EXPECT_FALSE(running()) << "the point's isphdem run outlived the killed study";
   EXPECT_FALSE(fs::exists(out / "slow" / "result.json"));
   EXPECT_FALSE(fs::exists(out / "study.csv"));
   const auto quick_written = fs::last_write_time(out / "quick" / "result.json");
@@ -159,7 +170,19 @@ TEST(Study, KilledStudyResumesWithoutRerunningFinishedPoints) {
 
   // Changing a value reruns the point under the same name: its overrides no longer match.
   const Result again = study(file.string() + " --out " + out.string() + " --set time.end=0.2");
+  EXPECT_EQ(again.exit_code, 0);
   EXPECT_EQ(count(again.output, "done earlier"), 0) << again.output;
+  // So does an edit of the base case: the points of an edited case are not the same points.
+  const fs::path base = dir / "base.toml";
+  fs::copy_file(example("taylor_green_2d"), base);
+  write_file(file, "base = \"" + base.string() +
+                       "\"\n[set]\n\"time.end\" = 0.2\n"
+                       "[[points]]\nname = \"quick\"\nset = { \"particles.spacing\" = 0.05 }\n");
+  EXPECT_NE(study(file.string() + " --out " + out.string()).output.find("quick: finished"),
+            std::string::npos);
+  std::ofstream(base, std::ios::app) << "\n# edited\n";
+  const Result edited = study(file.string() + " --out " + out.string());
+  EXPECT_EQ(count(edited.output, "done earlier"), 0) << edited.output;
 }
 
 TEST(Study, BadStudyFileStopsBeforeAnyPointRuns) {

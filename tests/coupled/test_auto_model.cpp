@@ -76,21 +76,29 @@ TEST(AutoModel, ClumpsWithoutFinesAreResolvedAndMixedSizesSaySo) {
   EXPECT_EQ(noted, 1);
 }
 
-TEST(AutoModel, FinesOutsideTheValidatedRangeAreFlagged) {
+TEST(AutoModel, FreeSpheresAreResolvedWhenLargeEnough) {
   DemState s;
   add_spheres(s, 2, 1e-3);  // d = 2 mm
   AutoChoice c = choose_model(s, 1e-3, AutoThresholds{});
   EXPECT_EQ(c.model, "unresolved");
   EXPECT_NE(c.classes[0].note.find("between the validated ranges"), std::string::npos);
-  c = choose_model(s, 0.5e-3, AutoThresholds{});  // d/dx 4: would be resolved
-  EXPECT_NE(c.classes[0].note.find("not resolved by PMS yet"), std::string::npos);
+  c = choose_model(s, 0.5e-3, AutoThresholds{});  // d/dx 4
+  EXPECT_EQ(c.model, "resolved");
+  EXPECT_TRUE(c.classes[0].resolved);
+  // With a second, small class of fines both stay unresolved (one model for all free spheres).
+  add_spheres(s, 5, 0.1e-3);
+  c = choose_model(s, 0.5e-3, AutoThresholds{});
+  EXPECT_EQ(c.model, "unresolved");
+  ASSERT_EQ(c.classes.size(), 2u);
+  EXPECT_NE(c.classes[1].note.find("one model for all free spheres"), std::string::npos)
+      << c.classes[1].note;
 }
 
 TEST(AutoModel, DemModelDatasetPerModel) {
   EXPECT_EQ(grain_models("semi-resolved").clumps, 1);
   EXPECT_EQ(grain_models("semi-resolved").free_spheres, 0);
   EXPECT_EQ(grain_models("unresolved").clumps, 0);
-  EXPECT_EQ(grain_models("resolved").free_spheres, -1);
+  EXPECT_EQ(grain_models("resolved").free_spheres, 1);
 }
 
 }  // namespace

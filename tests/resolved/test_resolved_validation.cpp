@@ -3,6 +3,7 @@
 // velocity, and a light box that floats at draft (rho_s / rho_f) H.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -64,6 +65,64 @@ TEST(ResolvedArchimedes, HeldClumpIn2DTankFeelsRhoGV) {
   EXPECT_LT(w.lateral, 0.005);
   EXPECT_LT(w.torque, 0.005);
   EXPECT_LT(raw.force_error, 0.02);  // the lattice matches V to half a particle (N ~ 130)
+}
+
+// coupling.model = "resolved" resolves free spheres too: a held sphere beside the held clump
+// gets its buoyancy on its atom (by tag), the clump on its body, each within the clump test's
+// tolerance; without free_spheres the sphere is not in the fluid at all.
+TEST(ResolvedArchimedes, HeldFreeSphereBesideAClumpFeelsRhoGVOnItsAtom) {
+  auto run = [](bool free_spheres, DemLoads& last, std::size_t& solids) {
+    auto scene = tank<2>({});
+    isph::IsphSolver<2> solver(scene.config, scene.domain, scene.particles);
+    DemState dem =
+        clump({Vec3{0.083, 0.081, 0}, Vec3{0.123, 0.081, 0}, Vec3{0.083, 0.121, 0}}, 0.02, 2600.0);
+    DemAtom fine;
+    fine.tag = 10;
+    fine.x = {0.16, 0.04, 0};
+    fine.radius = 0.02;  // d/dx = 8
+    dem.atoms.push_back(fine);
+    ResolvedSettings set;
+    set.spacing = solver.particles().spacing;
+    set.fluid_density = kRho;
+    set.slab_thickness = 0.03;
+    set.free_spheres = free_spheres;
+    ResolvedCoupling<2> stage(set);
+    stage.initialize(dem, solver);
+    solids = solver.particles().count(isph::kSolid);
+    double worst_sphere = 0, worst_body = 0, lateral = 0;
+    const double v_sphere = 4.0 / 3.0 * M_PI * std::pow(0.02, 3);
+    for (int n = 0; n < 100; ++n) {
+      stage.before_fluid_step(dem, solver);
+      solver.step(5e-4);
+      DemLoads loads;
+      stage.after_fluid_step(dem, solver, 5e-4, loads);
+      last = loads;
+      if (n < 50 || !free_spheres) continue;
+      const double b_sphere = kRho * kG * v_sphere, b_body = kRho * kG * dem.bodies[0].volume;
+      worst_sphere =
+          std::max(worst_sphere, std::abs(loads.atom_force.at(0)[1] - b_sphere) / b_sphere);
+      worst_body = std::max(worst_body, std::abs(loads.body_force.at(0)[1] - b_body) / b_body);
+      lateral = std::max(lateral, std::abs(loads.atom_force[0][0]) / b_sphere);
+    }
+    if (free_spheres)
+      std::printf(
+          "held free sphere (d/dx 8) beside a held clump: buoyancy error %.3e on the atom, "
+          "%.3e on the clump; lateral %.3e rho g V\n",
+          worst_sphere, worst_body, lateral);
+    return std::array<double, 3>{worst_sphere, worst_body, lateral};
+  };
+  DemLoads with, without;
+  std::size_t solids_with = 0, solids_without = 0;
+  const auto e = run(true, with, solids_with);
+  ASSERT_EQ(with.atom_tags, std::vector<int>{10});
+  ASSERT_EQ(with.body_ids, std::vector<int>{1});
+  EXPECT_LT(e[0], 0.02);
+  EXPECT_LT(e[1], 0.02);
+  EXPECT_LT(e[2], 0.005);
+  run(false, without, solids_without);
+  EXPECT_TRUE(without.atom_tags.empty());
+  // The disc of radius 4 dx: about pi 16 = 50 lattice nodes.
+  EXPECT_NEAR(double(solids_with - solids_without), M_PI * 16, 8.0);
 }
 
 TEST(ResolvedArchimedes, HeldClumpIn3DTankFeelsRhoGV) {

@@ -64,6 +64,16 @@ TEST_F(StudyFile, SetOnTheCommandLineReachesEveryPointLast) {
   for (const auto& p : s.points) EXPECT_EQ(p.overrides.back(), "time.end=0.1");
 }
 
+TEST_F(StudyFile, SetOfAVariedKeyIsRefused) {
+  try {
+    load("[grid]\n\"particles.spacing\" = [0.05, 0.025]\n", {"particles.spacing=0.01"});
+    FAIL() << "no error for --set of a varied key";
+  } catch (const CaseError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a key the study varies"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST_F(StudyFile, SameNameTwiceIsMadeUnique) {
   const Study s =
       load("[[points]]\nset = { \"time.end\" = 0.1 }\n[[points]]\nset = { \"time.end\" = 0.1 }\n");
@@ -91,6 +101,10 @@ TEST_F(StudyFile, BadFilesNameTheKey) {
   EXPECT_TRUE(has(m, "unknown key 'gird'") && has(m, "'grid'")) << m;
   m = error("[[points]]\nname = \"a/b\"\nset = { \"time.end\" = 0.1 }\n");
   EXPECT_TRUE(has(m, "'a/b'")) << m;
+  m = error("[[points]]\nname = \"study.csv\"\nset = { \"time.end\" = 0.1 }\n");
+  EXPECT_TRUE(has(m, "'study.csv'")) << m;
+  m = error("[grid]\n\"time.end\" = [0.1]\n[plot]\nmetric = \"amplitud\"\n");
+  EXPECT_TRUE(has(m, "'amplitud'") && has(m, "amplitude")) << m;
   m = error("[grid]\n\"time.end\" = [0.1]\n[plot]\nseries = \"coupling.model\"\n");
   EXPECT_TRUE(has(m, "'coupling.model' is not a key the study varies")) << m;
   // The base case itself is checked too.
