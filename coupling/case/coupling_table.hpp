@@ -7,7 +7,7 @@
 //         | "resolved"         # clumps and free spheres resolved, no porosity/drag stage
 //         | "auto"             # per grain class from d/dx at start (run/auto_model.hpp)
 //   auto.resolve_above = 3.0   # "auto": a class with d/dx at or above this is resolved
-//   auto.unresolve_below = 1.0 # "auto": below this unresolved drag holds; between, a warning
+//   auto.unresolve_below = 0.5 # "auto": below this unresolved drag holds; between, a warning
 //   slab_thickness = 1e-3      # quasi-2D: DEM slab thickness T [m] (alias unresolved.slab_thickness)
 //   pms_shape = "auto"         # "lattice" | "per_sphere" | "auto"
 //   pms_volume = "dem"         # "dem" | "particles"
@@ -33,7 +33,7 @@ std::string coupling_model(const CaseFile& c);
 // The d/dx thresholds of coupling.model = "auto" (docs/study.md, "Choosing the model").
 struct AutoThresholds {
   double resolve_above = 3.0;
-  double unresolve_below = 1.0;
+  double unresolve_below = 0.5;
 };
 AutoThresholds auto_thresholds(const CaseFile& c);
 

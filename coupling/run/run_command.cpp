@@ -429,6 +429,16 @@ int run_main(int argc, char** argv) {
     return fail(e);
   } catch (const std::runtime_error& e) {  // DEM backend: missing script, refused loads
     return fail(e);
+  } catch (const std::exception& e) {  // a scene the solver refuses (std::invalid_argument)
+    std::fprintf(stderr, "isphdem run: error: %s\n", e.what());
+    if (report && rank == 0) {
+      report->error(e.what());
+      try {
+        report->finish(false);
+      } catch (const std::exception&) {
+      }
+    }
+    return 1;
   }
 }
 

@@ -51,7 +51,8 @@ TEST(AutoModel, SeedLayerIsSemiResolved) {
   EXPECT_EQ(c.classes[1].count, 40u);
   EXPECT_EQ(describe(c.classes[0], 1e-3), "clumps d = 5 mm, d/dx 5 -> resolved (PMS), 2 bodies");
   EXPECT_EQ(describe(c.classes[1], 1e-3),
-            "free spheres d = 1 mm, d/dx 1 -> unresolved (porosity and drag), 40 spheres");
+            "free spheres d = 1 mm, d/dx 1 -> unresolved (porosity and drag), 40 spheres; between "
+            "the validated ranges (unresolved up to d/dx 0.50, resolved from 3.00)");
 }
 
 TEST(AutoModel, CoarseFluidLeavesEverythingUnresolved) {
