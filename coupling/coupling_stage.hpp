@@ -34,6 +34,16 @@ struct DemLoads {
   std::vector<Vec3> body_force, body_torque;
 };
 
+// The fluid's force on all grains together: what a held body or a fixed bed reads as its drag
+// (diagnostics hydro_force_*). Atoms and bodies never overlap (see above), so nothing counts twice.
+inline Vec3 total_force(const DemLoads& loads) {
+  Vec3 f{0.0, 0.0, 0.0};
+  for (const auto* forces : {&loads.atom_force, &loads.body_force})
+    for (const Vec3& g : *forces)
+      for (int a = 0; a < 3; ++a) f[a] += g[a];
+  return f;
+}
+
 template <int Dim>
 class CouplingStage {
  public:

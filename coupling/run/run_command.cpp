@@ -242,6 +242,9 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
                                    "floored_porosity",
                                    "drag_total_up",
                                    "fluid_resistance_up",
+                                   "hydro_force_x",
+                                   "hydro_force_y",
+                                   "hydro_force_z",
                                    "dem_seconds",
                                    "coupling_seconds",
                                    "fluid_seconds"};
@@ -338,6 +341,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
           }
         }
         const auto& t = run.timings();
+        const Vec3 hydro = total_force(run.loads());
         std::vector<double> row{solver.time(),
                                 double(step),
                                 omp_get_wtime() - start,
@@ -351,6 +355,9 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
                                 double(floored),
                                 drag_up,
                                 res_up,
+                                hydro[0],
+                                hydro[1],
+                                hydro[2],
                                 t.dem,
                                 t.coupling,
                                 t.fluid};

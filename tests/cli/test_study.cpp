@@ -113,6 +113,38 @@ TEST(Study, ErrorFallsWithResolutionAndABadPointIsRecorded) {
   }
 }
 
+// The reduced settling-grain study (examples/studies/settling_grain.toml at two of its spacings):
+// unresolved drag is validated where the grain is small against the fluid spacing and departs as
+// the grain fills its fluid particle (its volume spread over fewer particles lowers the porosity
+// around it, and the porosity-dependent drag slows it). The study must record both.
+TEST(Study, UnresolvedSettlingHoldsBelowHalfASpacingAndDepartsAtOne) {
+  const auto dir = scratch("study_settling");
+  const fs::path f = dir / "study.toml";
+  write_file(f, "base = \"" + example("settling_grain") +
+                    "\"\n[set]\n\"output.interval\" = 0.1\n"
+                    "[grid]\n\"particles.spacing\" = [0.0025, 0.001]\n"
+                    "[plot]\nmetric = \"terminal_velocity\"\nlabel = \"particles.spacing\"\n");
+  const Result r = study(f.string() + " --out " + (dir / "out").string() + " -j 2");
+  std::printf("%s", r.output.c_str());
+  ASSERT_EQ(r.exit_code, 0);
+  std::map<std::string, Row> by_name;
+  for (const auto& row : read_csv(dir / "out" / "study.csv")) by_name[row.at("point")] = row;
+  ASSERT_EQ(by_name.size(), 2u);
+  const Row& small = by_name.at("spacing=0.0025");  // d/dx = 0.4
+  const Row& full = by_name.at("spacing=0.001");    // d/dx = 1
+  ASSERT_EQ(small.at("status"), "finished");
+  ASSERT_EQ(full.at("status"), "finished");
+  const double e_small = std::stod(small.at("terminal_velocity_error"));
+  const double e_full = std::stod(full.at("terminal_velocity_error"));
+  std::printf("terminal velocity against Schiller-Naumann %s m/s: d/dx 0.4 %+.2f%%, d/dx 1 %+.2f%%\n",
+              small.at("terminal_velocity_expected").c_str(), 100 * e_small, 100 * e_full);
+  // docs/study.md: within about 1% up to d/dx 0.5 (coupling.auto.unresolve_below rests on it).
+  EXPECT_LT(std::abs(e_small), 0.015);
+  // ... and slower than the analytic grain by several per cent once d = dx.
+  EXPECT_LT(e_full, -0.04);
+  EXPECT_GT(std::abs(e_full), 3 * std::abs(e_small));
+}
+
 TEST(Study, KilledStudyResumesWithoutRerunningFinishedPoints) {
   const auto dir = scratch("study_resume");
   // One quick point, then one that takes a few times longer: the study is killed while the
