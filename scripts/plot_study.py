@@ -8,9 +8,11 @@ lower edge, so that a method's failures show on the same chart; points that neve
 in the title.
 
 With --stability X Y it draws instead how every point ended over two varied keys (e.g.
-particles.spacing and time.cfl): finished points as dots, stopped ones (blow-up, CFL stop, NaN)
-as crosses, refused ones as squares, and the stability boundary between the largest finished and
-the smallest stopped Y at each X.
+particles.spacing and time.cfl), one panel per value of --series (e.g. coupling.model): finished
+points as dots, stopped ones marked by their cause (CFL stop, NaN, pressure solve, porosity out of
+range, fluid or grain leaving its domain, grain overlap growth, energy growth), refused ones as
+squares, and the stability boundary between the largest finished and the smallest stopped Y at
+each X.
 
 usage: plot_study.py STUDY_CSV [-o PNG] [--metric NAME] [--series KEY] [--label KEY]
        plot_study.py STUDY_CSV --stability X Y [-o PNG]
@@ -97,21 +99,34 @@ def main():
     print(f"plot_study: {out}")
 
 
-def stability(args, rows, columns):
-    xkey, ykey = args.stability
-    for key in (xkey, ykey):
-        if key not in columns:
-            sys.exit(f"plot_study: no column '{key}' in {args.table}")
-    fig, ax = plt.subplots(figsize=(6.4, 4.6))
-    style = {"finished": ("o", "tab:green", "finished"), "stopped": ("x", "tab:red", "stopped"),
-             "error": ("s", "tab:gray", "refused at start")}
-    shown = set()
+# Stopped points by their cause (result.json "cause", study.csv column "cause").
+CAUSES = {
+    "cfl": ("x", "tab:red", "CFL stop"),
+    "nan": ("X", "darkred", "NaN"),
+    "pressure_solver": ("P", "tab:purple", "pressure solve failed"),
+    "porosity": ("v", "tab:brown", "porosity out of range"),
+    "fluid_left_domain": ("<", "tab:orange", "fluid left the domain"),
+    "grain_lost": (">", "tab:pink", "grain left the DEM box"),
+    "grain_overlap": ("D", "tab:olive", "grain overlap growth"),
+    "energy_growth": ("^", "tab:cyan", "energy growth"),
+}
+
+
+def stability_panel(ax, rows, xkey, ykey, shown):
     for r in rows:
         x, y = number(r[xkey]), number(r[ykey])
         if not (math.isfinite(x) and math.isfinite(y)):
             continue
-        marker, color, label = style.get(r["status"], ("^", "black", r["status"]))
-        ax.plot([x], [y], marker, color=color, markersize=9,
+        if r["status"] == "finished":
+            marker, color, label = "o", "tab:green", "finished"
+        elif r["status"] == "stopped":
+            cause = r.get("cause", "") or "other"
+            marker, color, label = CAUSES.get(cause, ("x", "black", f"stopped ({cause})"))
+        elif r["status"] == "error":
+            marker, color, label = "s", "tab:gray", "refused at start"
+        else:
+            marker, color, label = "^", "black", r["status"]
+        ax.plot([x], [y], marker, color=color, markersize=9, linestyle="none",
                 label=None if label in shown else label)
         shown.add(label)
     # The boundary: at each X, between the largest Y that finished and the smallest that did not.
@@ -125,17 +140,36 @@ def stability(args, rows, columns):
             bx.append(x)
             by.append(math.sqrt(max(ok) * min(bad)) if max(ok) > 0 else 0.5 * min(bad))
     if bx:
+        label = "stability boundary"
         ax.plot(bx, by, "--", color="black", marker="_", markersize=24,
-                label="stability boundary")
+                label=None if label in shown else label)
+        shown.add(label)
     for key, setter in ((xkey, ax.set_xscale), (ykey, ax.set_yscale)):
         values = [number(r[key]) for r in rows]
-        if all(v > 0 for v in values) and max(values) / min(values) >= 4:
+        if values and all(v > 0 for v in values) and max(values) / min(values) >= 4:
             setter("log")
     ax.set_xlabel(xkey)
-    ax.set_ylabel(ykey)
-    ax.set_title("how each point ended", fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
+
+
+def stability(args, rows, columns):
+    """How each point ended over X and Y, one panel per value of --series (e.g. the model)."""
+    xkey, ykey = args.stability
+    for key in (xkey, ykey) + ((args.series,) if args.series else ()):
+        if key not in columns:
+            sys.exit(f"plot_study: no column '{key}' in {args.table}")
+    groups = {}
+    for r in rows:
+        groups.setdefault(r[args.series] if args.series else "", []).append(r)
+    fig, axes = plt.subplots(1, len(groups), figsize=(5.2 * len(groups) + 1.2, 4.6), squeeze=False,
+                             sharey=True)
+    shown = set()
+    for ax, (name, points) in zip(axes[0], groups.items()):
+        stability_panel(ax, points, xkey, ykey, shown)
+        ax.set_title(f"{args.series} = {name}" if args.series else "how each point ended",
+                     fontsize=10)
+    axes[0][0].set_ylabel(ykey)
+    axes[0][-1].legend(fontsize=8, loc="best")
     fig.tight_layout()
     out = args.output or args.table.rsplit(".", 1)[0] + "_stability.png"
     fig.savefig(out, dpi=120)

@@ -122,7 +122,8 @@ void IsphSolver<Dim>::check_cfl(double dt, const StepStats& stats) const {
         " m/s); use a dt below " + format_number(limits().min(), 4) +
         " s (time.dt = \"auto\" in a fluid-only case; a coupled case needs time.dt and [dem] "
         "substeps changed together) or find what accelerates the flow this much; " +
-        describe_fastest());
+            describe_fastest(),
+        "cfl");
 }
 
 template <int Dim>
@@ -156,11 +157,13 @@ void IsphSolver<Dim>::check_state(const char* where) const {
     if (!P.x[i].allFinite() || !P.v[i].allFinite() || !std::isfinite(P.p[i]))
       throw SimulationError("non-finite value (NaN/inf) in particle " + std::to_string(P.id[i]) +
                             " " + where + " at t = " + format_number(time_, 4) +
-                            " s: the run became unstable; reduce time.dt (or use \"auto\")");
+                                " s: the run became unstable; reduce time.dt (or use \"auto\")",
+                            "nan");
     if (P.kind[i] != kWall && !domain_.contains(P.x[i]))
       throw SimulationError("fluid particle " + std::to_string(P.id[i]) + " left the domain at " +
                             format_vector(P.x[i]) + ", t = " + format_number(time_, 4) +
-                            " s: close the container with walls or enlarge domain.min/max");
+                                " s: close the container with walls or enlarge domain.min/max",
+                            "fluid_left_domain");
   }
 }
 

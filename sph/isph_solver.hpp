@@ -12,6 +12,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "domain.hpp"
@@ -91,10 +92,17 @@ struct IsphConfig {
   LinearSolverConfig pressure_solver;
 };
 
-// Stops a run with a message naming the cause and the fix.
+// Stops a run with a message naming the cause and the fix. `cause` is the same in one word, for
+// result.json and the stability map of a study: "nan", "cfl", "pressure_solver", "porosity",
+// "fluid_left_domain", "grain_lost", "grain_overlap", "energy_growth" or "other".
 class SimulationError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit SimulationError(const std::string& what, std::string cause = "other")
+      : std::runtime_error(what), cause_(std::move(cause)) {}
+  const std::string& cause() const { return cause_; }
+
+ private:
+  std::string cause_;
 };
 
 struct StepTimings {

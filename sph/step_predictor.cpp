@@ -90,8 +90,9 @@ void IsphSolver<Dim>::predict(double dt) {
   try {
     porous_.prepare(P, nb_, dt);
   } catch (const std::invalid_argument& e) {
-    throw SimulationError(std::string("porous terms at t = ") + format_number(time_, 4) +
-                          " s: " + e.what());
+    throw SimulationError(
+        std::string("porous terms at t = ") + format_number(time_, 4) + " s: " + e.what(),
+        "porosity");
   }
   u_star_.resize(n);
 #pragma omp parallel for schedule(static)

@@ -96,7 +96,8 @@ void IsphSolver<Dim>::solve_pressure(StepStats& stats) {
                           ", t = " + format_number(time_, 4) + " s (relative residual " +
                           format_number(s.residual, 4) + " after " + std::to_string(s.iterations) +
                           " iterations" + (s.reason.empty() ? "" : ", " + s.reason) +
-                          "): reduce time.dt or check the geometry for isolated particles");
+                              "): reduce time.dt or check the geometry for isolated particles",
+                          "pressure_solver");
   Eigen::Map<Eigen::VectorXd>(P.p.data(), n) = pressure_;
 }
 

@@ -7,6 +7,7 @@
 
 #include "dem/dem_case_config.hpp"
 #include "format_number.hpp"
+#include "run/grain_overlap.hpp"
 #include "stopwatch.hpp"
 
 namespace isphdem {
@@ -70,7 +71,26 @@ isph::StepStats CoupledRun<Dim>::advance() {
   backend_.set_body_loads(loads_.body_ids, loads_.body_force, loads_.body_torque);
   backend_.advance(substeps_);
   check_no_grain_lost(backend_.state());
+  check_overlap(backend_.state());
   return stats;
+}
+
+template <int Dim>
+void CoupledRun<Dim>::check_overlap(const DemState& now) {
+  const GrainOverlap o = deepest_overlap(now);
+  max_overlap_ = o.relative;
+  if (o.relative <= kMaxGrainOverlap) return;
+  const double t1 = fluid_.solver().time(), t0 = t1 - dt_;
+  throw isph::SimulationError(
+      "grains " + std::to_string(o.tag_a) + " and " + std::to_string(o.tag_b) + " overlap by " +
+          isph::format_number(100 * o.relative, 3) + "% of the smaller radius after the DEM steps " +
+          "between t = " + isph::format_number(t0, 6) + " and " + isph::format_number(t1, 6) +
+          " s (a contact that resolves its collision stays far below " +
+          isph::format_number(100 * kMaxGrainOverlap, 3) +
+          "%): the DEM time step is too long for the contact stiffness. Shorten the DEM "
+          "timestep (a tenth of the contact time or less) and raise [dem] substeps with it, or "
+          "look for a load that drives grains into each other",
+      "grain_overlap");
 }
 
 template <int Dim>
@@ -102,7 +122,8 @@ void CoupledRun<Dim>::check_no_grain_lost(const DemState& now) const {
       ": LIGGGHTS drops a grain that crosses a fixed (f) boundary of its box without an error. "
       "Enlarge the box (region/create_box in the DEM script) or close it with walls, and check "
       "what drove the grain there (a fluid time step too large for the drag, a wrong initial "
-      "velocity)");
+      "velocity)",
+      "grain_lost");
 }
 
 template <int Dim>

@@ -44,6 +44,8 @@ class CoupledRun {
   const DemLoads& loads() const { return loads_; }
   const std::vector<std::unique_ptr<CouplingStage<Dim>>>& stages() const { return stages_; }
   const CoupledTimings& timings() const { return timings_; }
+  // The deepest overlap of two grains after the last step, a fraction of the smaller radius.
+  double max_overlap() const { return max_overlap_; }
 
  private:
   FluidRun<Dim> fluid_;
@@ -52,10 +54,13 @@ class CoupledRun {
   double dt_;
   std::vector<std::unique_ptr<CouplingStage<Dim>>> stages_;
   void check_no_grain_lost(const DemState& now) const;
+  // Throws isph::SimulationError (cause "grain_overlap") past kMaxGrainOverlap.
+  void check_overlap(const DemState& now);
 
   DemLoads loads_;
   CoupledTimings timings_;
   std::vector<DemAtom> atoms_before_;  // the grains at the start of the step, by tag
+  double max_overlap_ = 0.0;
 };
 
 }  // namespace isphdem

@@ -64,11 +64,12 @@ using Arguments = VerbArguments;
 // Advances `run` (FluidRun or CoupledRun) to settings.t_end with each output time as a landing
 // point, so snapshots fall on t = k * interval. A SimulationError stops the run: the progress
 // line is closed, `report` says where it stopped (the snapshots already written are complete),
-// `why` gets the error and false comes back. `end_tolerance` is the relative slack on t_end.
+// `why` gets the error, `cause` its one-word cause, and false comes back. `end_tolerance` is the relative slack on t_end.
 template <class Run, class StepCallback, class WriteSnapshot>
 bool run_to_end(Run& run, const RunSettings& settings, double end_tolerance,
                 const StepCallback& after_step, const WriteSnapshot& snapshot,
-                ProgressLine& progress, bool report, const fs::path& out, std::string& why) {
+                ProgressLine& progress, bool report, const fs::path& out, std::string& why,
+                std::string& cause) {
   const auto& solver = run.solver();
   try {
     for (long k = 1; solver.time() < settings.t_end * (1.0 - end_tolerance); ++k) {
@@ -78,6 +79,7 @@ bool run_to_end(Run& run, const RunSettings& settings, double end_tolerance,
   } catch (const isph::SimulationError& e) {
     progress.finish();
     why = e.what();
+    cause = e.cause();
     if (report)
       std::fprintf(stderr,
                    "isphdem run: stopped at t = %g s, step %ld: %s\n"
@@ -150,12 +152,12 @@ int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
     }
     progress.update(solver.time(), step);
   };
-  std::string why;
+  std::string why, cause;
   const bool finished =
-      run_to_end(run, settings, 1e-12, after_step, snapshot, progress, true, args.out, why);
+      run_to_end(run, settings, 1e-12, after_step, snapshot, progress, true, args.out, why, cause);
   report.cost(solver.time(), solver.steps(), long(P.size()), omp_get_wtime() - start, ppe_total);
   if (!finished) {
-    report.stopped(why);
+    report.stopped(why, cause);
     return 1;
   }
 
@@ -245,6 +247,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
                                    "hydro_force_x",
                                    "hydro_force_y",
                                    "hydro_force_z",
+                                   "max_overlap",
                                    "dem_seconds",
                                    "coupling_seconds",
                                    "fluid_seconds"};
@@ -358,6 +361,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
                                 hydro[0],
                                 hydro[1],
                                 hydro[2],
+                                run.max_overlap(),
                                 t.dem,
                                 t.coupling,
                                 t.fluid};
@@ -367,13 +371,13 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     }
     if (rank == 0) progress.update(solver.time(), step);
   };
-  std::string why;
+  std::string why, cause;
   const bool finished =
-      run_to_end(run, settings, 1e-9, after_step, snapshot, progress, rank == 0, args.out, why);
+      run_to_end(run, settings, 1e-9, after_step, snapshot, progress, rank == 0, args.out, why, cause);
   backend.finalize();
   report.cost(solver.time(), solver.steps(), long(P.size()), omp_get_wtime() - start, ppe_total);
   if (!finished) {
-    report.stopped(why);
+    report.stopped(why, cause);
     return 1;
   }
   if (talk) {

@@ -30,9 +30,10 @@ void RunReport::cost(double time, long steps, long particles, double wall, long 
   result_.ppe_iterations_per_step = steps > 0 ? double(ppe) / double(steps) : 0.0;
 }
 
-void RunReport::stopped(const std::string& why) {
+void RunReport::stopped(const std::string& why, const std::string& cause) {
   result_.status = "stopped";
   result_.message = why;
+  result_.cause = cause;
 }
 
 void RunReport::error(const std::string& why) {

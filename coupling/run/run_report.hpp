@@ -20,7 +20,7 @@ class RunReport {
   // CaseError before the first step when a metric reads a column this run does not write.
   void check_columns(const std::vector<std::string>& columns) const;
   void cost(double time, long steps, long particles, double wall_seconds, long ppe_iterations);
-  void stopped(const std::string& why);
+  void stopped(const std::string& why, const std::string& cause);
   void error(const std::string& why);
 
   // Evaluates the metrics (finished or stopped runs), prints them when `talk`, and writes

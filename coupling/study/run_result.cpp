@@ -54,6 +54,7 @@ void write_run_result(const std::filesystem::path& file, const RunResult& r) {
                        {"error_kind", m.relative ? "relative" : "absolute"}});
   const json j = {{"status", r.status},
                   {"message", r.message},
+                  {"cause", r.cause},
                   {"overrides", r.overrides},
                   {"case_file", r.case_file},
                   {"case_fingerprint", r.case_fingerprint},
@@ -86,6 +87,7 @@ std::optional<RunResult> read_run_result(const std::filesystem::path& file) {
   RunResult r;
   r.status = j["status"].get<std::string>();
   r.message = text(j, "message");
+  r.cause = text(j, "cause");
   r.case_file = text(j, "case_file");
   r.case_fingerprint = text(j, "case_fingerprint");
   if (j.contains("overrides") && j["overrides"].is_array())

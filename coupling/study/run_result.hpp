@@ -16,6 +16,7 @@ struct RunResult {
   // grain leaving the domain) ended it early, output so far valid; "error": bad input.
   std::string status;
   std::string message;                 // the error, for "stopped" and "error"
+  std::string cause;                   // "stopped": isph::SimulationError::cause(), e.g. "cfl"
   std::vector<std::string> overrides;  // the --set values of the run, in order
   std::string case_file;               // the case file, absolute
   std::string case_fingerprint;        // of its text (case_fingerprint()): an edit shows

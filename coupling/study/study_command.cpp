@@ -72,12 +72,17 @@ void plot(const Study& study, const fs::path& out, bool quiet, bool has_metrics)
     charts.emplace_back("study.png", cmd);
   else if (!quiet)
     std::printf("isphdem study: no point reported a [reference] metric: no study.png\n");
-  if (!study.stability.empty())
-    charts.emplace_back("stability.png", "/usr/bin/python3 " + quote(script.string()) + " " +
-                                             quote((out / "study.csv").string()) + " -o " +
-                                             quote((out / "stability.png").string()) +
-                                             " --stability " + quote(study.stability[0]) + " " +
-                                             quote(study.stability[1]));
+  if (!study.stability.empty()) {
+    std::string map = "/usr/bin/python3 " + quote(script.string()) + " " +
+                      quote((out / "study.csv").string()) + " -o " +
+                      quote((out / "stability.png").string()) + " --stability " +
+                      quote(study.stability[0]) + " " + quote(study.stability[1]);
+    // One panel per series value (a map per model), unless the series is an axis of the map.
+    if (!study.plot_series.empty() && study.plot_series != study.stability[0] &&
+        study.plot_series != study.stability[1])
+      map += " --series " + quote(study.plot_series);
+    charts.emplace_back("stability.png", map);
+  }
   for (auto& [png, command] : charts) {
     if (quiet) command += " > /dev/null";
     if (!fs::exists("/usr/bin/python3") || !fs::exists(script) || std::system(command.c_str()) != 0)

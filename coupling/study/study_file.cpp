@@ -33,7 +33,9 @@ const char* study_file_help() {
          "  series = \"solver.preconditioner\"         # one line per value of this key\n"
          "  label = \"particles.spacing\"              # the value written beside each point\n"
          "  stability = [\"particles.spacing\", \"time.cfl\"]  # stability.png: how each point\n"
-         "                                           # ended over two varied keys\n"
+         "                                           # ended over two varied keys (by its\n"
+         "                                           # cause: cfl, nan, grain_overlap, ...),\n"
+         "                                           # a panel per series value\n"
          "Keys are any case keys, written as for --set (quoted, or as dotted TOML keys). The\n"
          "metrics are the base case's [reference] metrics, computed by each run into its\n"
          "result.json.\n";

@@ -37,7 +37,7 @@ void write_study_table(const std::filesystem::path& file, const Study& study,
   std::string csv = "point";
   for (const auto& k : study.varied) csv += "," + field(k);
   csv +=
-      ",status,message,time,steps,particles,wall_seconds,particle_steps_per_second,"
+      ",status,cause,message,time,steps,particles,wall_seconds,particle_steps_per_second,"
       "ppe_iterations_per_step";
   for (const auto& m : metrics) csv += "," + m + "," + m + "_expected," + m + "_error";
   csv += "\n";
@@ -49,7 +49,7 @@ void write_study_table(const std::filesystem::path& file, const Study& study,
     csv += field(p.name);
     for (const auto& key : study.varied) csv += "," + field(values.count(key) ? values[key] : "");
     const bool ran = o.status == "finished" || o.status == "stopped";
-    csv += "," + o.status + "," + field(o.message);
+    csv += "," + o.status + "," + field(o.result.cause) + "," + field(o.message);
     for (double x : {r.time, double(r.steps), double(r.particles), r.wall_seconds,
                      r.particle_steps_per_second, r.ppe_iterations_per_step})
       csv += "," + (ran ? number(x) : std::string("nan"));

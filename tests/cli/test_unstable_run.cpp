@@ -3,6 +3,9 @@
 // and leave every snapshot it wrote readable (never NaN-filled files).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <sstream>
+
 #include "cli_support.hpp"
 
 namespace isphdem::cli {
@@ -30,10 +33,44 @@ TEST(UnstableRun, StopsCleanlyWithOutputIntact) {
   const std::string result((std::istreambuf_iterator<char>(json)), {});
   EXPECT_NE(result.find("\"status\": \"stopped\""), std::string::npos) << result;
   EXPECT_NE(result.find("beyond the CFL limit"), std::string::npos) << result;
+  EXPECT_NE(result.find("\"cause\": \"cfl\""), std::string::npos) << result;
 
   if (!has_pvpython()) GTEST_SKIP() << "pvpython not installed";
   // ParaView loads every step listed in the XDMF.
   EXPECT_EQ(paraview_check(dir / "out", "--steps " + std::to_string(snaps)), 0);
+}
+
+// A DEM step as long as the contact (dem_dt = t_c / 1.6 in the fluidization column, the seed's
+// is t_c / 16) lets grains pass into each other in one fluid step: the run stops on the overlap,
+// naming both grains and the fix, instead of running on with grains flung apart.
+TEST(UnstableRun, DemStepTooLongForTheContactStopsOnGrainOverlap) {
+  const auto dir = scratch("overlap");
+  const Result r = run(example("fluidization_2d") + " --out " + (dir / "out").string() +
+                       " --set time.end=0.01 --set dem.variables.dem_dt=1e-5"
+                       " --set dem.substeps=10 --set output.interval=0.001");
+  std::printf("%s", r.output.c_str());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("of the smaller radius"), std::string::npos);
+  EXPECT_NE(r.output.find("Shorten the DEM timestep"), std::string::npos);
+  EXPECT_GE(count_snapshots(dir / "out"), 1);  // the initial state, complete
+  std::ifstream json(dir / "out" / "result.json");
+  const std::string result((std::istreambuf_iterator<char>(json)), {});
+  EXPECT_NE(result.find("\"cause\": \"grain_overlap\""), std::string::npos) << result;
+  // The seed's DEM step in the same column: no contact goes deeper than a thousandth of a radius.
+  const Result ok = run(example("fluidization_2d") + " --out " + (dir / "ok").string() +
+                        " --set time.end=0.01 --set output.interval=0.01");
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+  std::ifstream csv(dir / "ok" / "diagnostics.csv");
+  std::string header, line, last;
+  std::getline(csv, header);
+  while (std::getline(csv, line)) last = line;
+  std::vector<std::string> h, v;
+  for (std::stringstream hs(header); std::getline(hs, line, ',');) h.push_back(line);
+  for (std::stringstream vs(last); std::getline(vs, line, ',');) v.push_back(line);
+  const auto col = std::find(h.begin(), h.end(), "max_overlap") - h.begin();
+  ASSERT_LT(std::size_t(col), v.size()) << header;
+  EXPECT_LT(std::stod(v[col]), 1e-3);
+  EXPECT_GE(std::stod(v[col]), 0.0);
 }
 
 }  // namespace
