@@ -74,7 +74,9 @@ def main():
         done.sort(key=lambda p: number(p["wall_seconds"]))
         x = [number(p["wall_seconds"]) for p in done]
         y = [max(abs(number(p[metric + "_error"])), floor) for p in done]
-        line, = ax.plot(x, y, "o-", label=name or metric)
+        # Points that leave the series key at the base case's value have no value in the table.
+        shown = name or ("as in the case" if args.series else metric)
+        line, = ax.plot(x, y, "o-", label=shown)
         if args.label:
             for p, xi, yi in zip(done, x, y):
                 ax.annotate(p[args.label], (xi, yi), textcoords="offset points", xytext=(4, 4),
