@@ -20,7 +20,7 @@ IsphSolver<Dim>::IsphSolver(const IsphConfig<Dim>& config, const Domain<Dim>& do
       kernel_(config.kernel, config.smoothing_ratio * particles_.spacing),
       search_(domain, kernel_.support()),
       linear_solver_(make_linear_solver(config.pressure_solver)),
-      unit_solver_(make_linear_solver(unit_solver_config(config.pressure_solver))) {
+      unit_solver_(make_linear_solver(config.pressure_solver)) {
   if (!(particles_.spacing > 0.0))
     throw SimulationError("particle spacing must be positive (particles.spacing)");
   if (particles_.size() == 0) throw SimulationError("the case creates no particles");

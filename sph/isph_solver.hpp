@@ -171,7 +171,6 @@ class IsphSolver {
   std::string describe_fastest() const;
   void check_state(const char* where) const;
   void check_cfl(double dt, const StepStats& stats) const;
-  static LinearSolverConfig unit_solver_config(LinearSolverConfig c);
 
   IsphConfig<Dim> config_;
   Domain<Dim> domain_;
@@ -179,7 +178,7 @@ class IsphSolver {
   Kernel<Dim> kernel_;
   NeighborSearch<Dim> search_;
   std::unique_ptr<LinearSolver> linear_solver_;
-  std::unique_ptr<LinearSolver> unit_solver_;  // for spread_pinned_source's q, looser tolerance
+  std::unique_ptr<LinearSolver> unit_solver_;  // for spread_pinned_source's q (its own setup)
   double n0_ = 0.0;
   double time_ = 0.0;
   long steps_ = 0;
