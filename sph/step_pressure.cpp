@@ -12,11 +12,14 @@ namespace {
 
 // q of spread_pinned_source carries the pinned row's excess to the other rows: p -= lambda q, so
 // q's residual enters every row's equation times lambda. It is solved to the pressure's own
-// tolerance. At 1e-3 (until 2026-12-04) the residual was harmless with Eigen's BiCGSTAB but not
-// with BoomerAMG, whose few V-cycles leave it in sharp local peaks: the semi-resolved closed
-// erosion tank blew up at t = 0.33 s with amg and ran to 0.4 s and on with q at 1e-8. The cost
-// is small because q is solved every 10th step and warm-started: in that tank with ilu0, 35.3
-// against 32.3 BiCGSTAB iterations per step over 0.15 s, 1% of the wall time.
+// tolerance, so that the spread pressure meets the tolerance asked for. With q at 1e-3 (until
+// 2026-12-04) the semi-resolved closed erosion tank blew up with amg at t = 0.33 s (0.29 s at
+// tolerance 1e-10) while Eigen's BiCGSTAB ran on; with q at the pressure's tolerance amg ran it
+// to 1 s (0.4 s at 1e-10). A q tied to lambda (|lambda r| within the pressure's own budget) blew
+// up again at 1e-10 (0.30 s): that trajectory is sensitive, and only the tight q carried it
+// (docs/fluid.md). The price, q being solved every 10th step and warm-started: 8-9% more PPE
+// iterations in closed and periodic boxes (Taylor-Green at 6400 particles, jacobi 96.9 against
+// 89.1 per step; the closed erosion tank, ilu0, 35.3 against 32.3), 1% of that tank's wall time.
 constexpr int kUnitResponseEvery = 10;
 
 }  // namespace
