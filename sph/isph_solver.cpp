@@ -116,12 +116,12 @@ void IsphSolver<Dim>::check_cfl(double dt, const StepStats& stats) const {
   if (dt * stats.max_speed > particles_.spacing)
     throw SimulationError(
         "time step far beyond the CFL limit at t = " + format_number(time_, 4) +
-        " s: dt = " + format_number(dt, 4) + " s moved particles " +
-        format_number(dt * stats.max_speed / particles_.spacing, 4) +
-        " spacings in one step (max |u| = " + format_number(stats.max_speed, 4) +
-        " m/s); use a dt below " + format_number(limits().min(), 4) +
-        " s (time.dt = \"auto\" in a fluid-only case; a coupled case needs time.dt and [dem] "
-        "substeps changed together) or find what accelerates the flow this much; " +
+            " s: dt = " + format_number(dt, 4) + " s moved particles " +
+            format_number(dt * stats.max_speed / particles_.spacing, 4) +
+            " spacings in one step (max |u| = " + format_number(stats.max_speed, 4) +
+            " m/s); use a dt below " + format_number(limits().min(), 4) +
+            " s (time.dt = \"auto\" in a fluid-only case; a coupled case needs time.dt and [dem] "
+            "substeps changed together) or find what accelerates the flow this much; " +
             describe_fastest(),
         "cfl");
 }
@@ -156,12 +156,12 @@ void IsphSolver<Dim>::check_state(const char* where) const {
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (!P.x[i].allFinite() || !P.v[i].allFinite() || !std::isfinite(P.p[i]))
       throw SimulationError("non-finite value (NaN/inf) in particle " + std::to_string(P.id[i]) +
-                            " " + where + " at t = " + format_number(time_, 4) +
+                                " " + where + " at t = " + format_number(time_, 4) +
                                 " s: the run became unstable; reduce time.dt (or use \"auto\")",
                             "nan");
     if (P.kind[i] != kWall && !domain_.contains(P.x[i]))
       throw SimulationError("fluid particle " + std::to_string(P.id[i]) + " left the domain at " +
-                            format_vector(P.x[i]) + ", t = " + format_number(time_, 4) +
+                                format_vector(P.x[i]) + ", t = " + format_number(time_, 4) +
                                 " s: close the container with walls or enlarge domain.min/max",
                             "fluid_left_domain");
   }

@@ -90,9 +90,10 @@ void IsphSolver<Dim>::solve_pressure(StepStats& stats) {
   if (s.broke_down || !std::isfinite(s.residual) ||
       s.residual > 1e3 * config_.pressure_solver.tolerance)
     throw SimulationError("pressure solver failed at step " + std::to_string(steps_ + 1) +
-                          ", t = " + format_number(time_, 4) + " s (relative residual " +
-                          format_number(s.residual, 4) + " after " + std::to_string(s.iterations) +
-                          " iterations" + (s.reason.empty() ? "" : ", " + s.reason) +
+                              ", t = " + format_number(time_, 4) + " s (relative residual " +
+                              format_number(s.residual, 4) + " after " +
+                              std::to_string(s.iterations) + " iterations" +
+                              (s.reason.empty() ? "" : ", " + s.reason) +
                               "): reduce time.dt or check the geometry for isolated particles",
                           "pressure_solver");
   Eigen::Map<Eigen::VectorXd>(P.p.data(), n) = pressure_;

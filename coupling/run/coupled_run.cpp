@@ -83,7 +83,8 @@ void CoupledRun<Dim>::check_overlap(const DemState& now) {
   const double t1 = fluid_.solver().time(), t0 = t1 - dt_;
   throw isph::SimulationError(
       "grains " + std::to_string(o.tag_a) + " and " + std::to_string(o.tag_b) + " overlap by " +
-          isph::format_number(100 * o.relative, 3) + "% of the smaller radius after the DEM steps " +
+          isph::format_number(100 * o.relative, 3) +
+          "% of the smaller radius after the DEM steps " +
           "between t = " + isph::format_number(t0, 6) + " and " + isph::format_number(t1, 6) +
           " s (a contact that resolves its collision stays far below " +
           isph::format_number(100 * kMaxGrainOverlap, 3) +
@@ -118,11 +119,11 @@ void CoupledRun<Dim>::check_no_grain_lost(const DemState& now) const {
   }
   throw isph::SimulationError(
       what + " left the DEM simulation between t = " + isph::format_number(t0, 6) + " and " +
-      isph::format_number(t1, 6) + " s" + where +
-      ": LIGGGHTS drops a grain that crosses a fixed (f) boundary of its box without an error. "
-      "Enlarge the box (region/create_box in the DEM script) or close it with walls, and check "
-      "what drove the grain there (a fluid time step too large for the drag, a wrong initial "
-      "velocity)",
+          isph::format_number(t1, 6) + " s" + where +
+          ": LIGGGHTS drops a grain that crosses a fixed (f) boundary of its box without an error. "
+          "Enlarge the box (region/create_box in the DEM script) or close it with walls, and check "
+          "what drove the grain there (a fluid time step too large for the drag, a wrong initial "
+          "velocity)",
       "grain_lost");
 }
 

@@ -18,7 +18,8 @@ GrainOverlap deepest_overlap(const DemState& state) {
   const double cell = 2.0 * rmax;
   auto key = [](long i, long j, long k) {
     return (static_cast<unsigned long>(i) * 73856093UL) ^
-           (static_cast<unsigned long>(j) * 19349663UL) ^ (static_cast<unsigned long>(k) * 83492791UL);
+           (static_cast<unsigned long>(j) * 19349663UL) ^
+           (static_cast<unsigned long>(k) * 83492791UL);
   };
   auto index = [&](double x) { return static_cast<long>(std::floor(x / cell)); };
   std::unordered_multimap<unsigned long, int> cells;

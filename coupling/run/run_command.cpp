@@ -64,7 +64,8 @@ using Arguments = VerbArguments;
 // Advances `run` (FluidRun or CoupledRun) to settings.t_end with each output time as a landing
 // point, so snapshots fall on t = k * interval. A SimulationError stops the run: the progress
 // line is closed, `report` says where it stopped (the snapshots already written are complete),
-// `why` gets the error, `cause` its one-word cause, and false comes back. `end_tolerance` is the relative slack on t_end.
+// `why` gets the error, `cause` its one-word cause, and false comes back. `end_tolerance` is the
+// relative slack on t_end.
 template <class Run, class StepCallback, class WriteSnapshot>
 bool run_to_end(Run& run, const RunSettings& settings, double end_tolerance,
                 const StepCallback& after_step, const WriteSnapshot& snapshot,
@@ -372,8 +373,8 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     if (rank == 0) progress.update(solver.time(), step);
   };
   std::string why, cause;
-  const bool finished =
-      run_to_end(run, settings, 1e-9, after_step, snapshot, progress, rank == 0, args.out, why, cause);
+  const bool finished = run_to_end(run, settings, 1e-9, after_step, snapshot, progress, rank == 0,
+                                   args.out, why, cause);
   backend.finalize();
   report.cost(solver.time(), solver.steps(), long(P.size()), omp_get_wtime() - start, ppe_total);
   if (!finished) {

@@ -5,9 +5,9 @@
 // case runs the real binary on a broken copy of a shipped example.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <fstream>
 #include <iterator>
-#include <cctype>
 #include <set>
 #include <utility>
 #include <vector>
@@ -74,7 +74,8 @@ void expect_valid_snapshots(const fs::path& out, int at_least) {
   for (auto at = xdmf.find("snap_"); at != std::string::npos; at = xdmf.find("snap_", at + 1)) {
     auto end = at + 5;
     while (end < xdmf.size() && std::isdigit(static_cast<unsigned char>(xdmf[end]))) ++end;
-    if (end > at + 5 && xdmf.compare(end, 3, ".h5") == 0) named.insert(xdmf.substr(at, end + 3 - at));
+    if (end > at + 5 && xdmf.compare(end, 3, ".h5") == 0)
+      named.insert(xdmf.substr(at, end + 3 - at));
   }
   EXPECT_EQ(named, on_disk);
   std::printf("%zu snapshots written before the error, all readable and in fluid.xdmf\n",

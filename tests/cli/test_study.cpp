@@ -136,8 +136,9 @@ TEST(Study, UnresolvedSettlingHoldsBelowHalfASpacingAndDepartsAtOne) {
   ASSERT_EQ(full.at("status"), "finished");
   const double e_small = std::stod(small.at("terminal_velocity_error"));
   const double e_full = std::stod(full.at("terminal_velocity_error"));
-  std::printf("terminal velocity against Schiller-Naumann %s m/s: d/dx 0.4 %+.2f%%, d/dx 1 %+.2f%%\n",
-              small.at("terminal_velocity_expected").c_str(), 100 * e_small, 100 * e_full);
+  std::printf(
+      "terminal velocity against Schiller-Naumann %s m/s: d/dx 0.4 %+.2f%%, d/dx 1 %+.2f%%\n",
+      small.at("terminal_velocity_expected").c_str(), 100 * e_small, 100 * e_full);
   // docs/study.md: within about 1% up to d/dx 0.5 (coupling.auto.unresolve_below rests on it).
   EXPECT_LT(std::abs(e_small), 0.015);
   // ... and slower than the analytic grain by several per cent once d = dx.

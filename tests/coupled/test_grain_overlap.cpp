@@ -20,8 +20,9 @@ TEST(GrainOverlap, DeepestPairRelativeToTheSmallerRadius) {
   DemState s;
   // 1 and 2 touch (gap 0), 3 and 4 overlap by 0.1 mm with radii 1 and 0.5 mm: 20% of 0.5 mm;
   // 5 sits far from everything. Tags out of cell order on purpose.
-  s.atoms = {atom(4, {0.0104, 0, 0}, 0.5e-3), atom(1, {0, 0, 0}, 1e-3), atom(2, {0.002, 0, 0}, 1e-3),
-             atom(3, {0.009, 0, 0}, 1e-3), atom(5, {0.5, 0.5, 0.5}, 1e-3)};
+  s.atoms = {atom(4, {0.0104, 0, 0}, 0.5e-3), atom(1, {0, 0, 0}, 1e-3),
+             atom(2, {0.002, 0, 0}, 1e-3), atom(3, {0.009, 0, 0}, 1e-3),
+             atom(5, {0.5, 0.5, 0.5}, 1e-3)};
   const GrainOverlap o = deepest_overlap(s);
   EXPECT_NEAR(o.relative, 0.2, 1e-9);
   EXPECT_EQ(std::min(o.tag_a, o.tag_b), 3);
