@@ -6,7 +6,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
+#include <vector>
 
 namespace isphdem::cli {
 
@@ -78,5 +80,39 @@ inline int paraview_check(const std::filesystem::path& out, const std::string& a
 }
 
 inline bool has_pvpython() { return std::system("command -v pvpython > /dev/null 2>&1") == 0; }
+
+// A CSV the runs write (study.csv, diagnostics.csv): one map of column -> text per row.
+using Row = std::map<std::string, std::string>;
+
+inline std::vector<Row> read_csv(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::string line;
+  std::vector<std::string> header;
+  std::vector<Row> rows;
+  auto split = [](const std::string& l) {
+    std::vector<std::string> f;
+    std::string cur;
+    bool quoted = false;
+    for (char c : l) {
+      if (c == '"')
+        quoted = !quoted;
+      else if (c == ',' && !quoted) {
+        f.push_back(cur);
+        cur.clear();
+      } else
+        cur += c;
+    }
+    f.push_back(cur);
+    return f;
+  };
+  if (std::getline(in, line)) header = split(line);
+  while (std::getline(in, line)) {
+    const auto f = split(line);
+    Row r;
+    for (std::size_t k = 0; k < header.size() && k < f.size(); ++k) r[header[k]] = f[k];
+    rows.push_back(r);
+  }
+  return rows;
+}
 
 }  // namespace isphdem::cli

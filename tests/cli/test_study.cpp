@@ -19,39 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using Row = std::map<std::string, std::string>;
-
-std::vector<Row> read_csv(const fs::path& p) {
-  std::ifstream in(p);
-  std::string line;
-  std::vector<std::string> header;
-  std::vector<Row> rows;
-  auto split = [](const std::string& l) {
-    std::vector<std::string> f;
-    std::string cur;
-    bool quoted = false;
-    for (char c : l) {
-      if (c == '"')
-        quoted = !quoted;
-      else if (c == ',' && !quoted) {
-        f.push_back(cur);
-        cur.clear();
-      } else
-        cur += c;
-    }
-    f.push_back(cur);
-    return f;
-  };
-  if (std::getline(in, line)) header = split(line);
-  while (std::getline(in, line)) {
-    const auto f = split(line);
-    Row r;
-    for (std::size_t k = 0; k < header.size() && k < f.size(); ++k) r[header[k]] = f[k];
-    rows.push_back(r);
-  }
-  return rows;
-}
-
 fs::path write_study(const fs::path& dir, const std::string& body) {
   const fs::path f = dir / "study.toml";
   write_file(f, "base = \"" + example("taylor_green_2d") + "\"\n" + body);
