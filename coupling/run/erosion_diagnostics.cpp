@@ -49,6 +49,7 @@ ErosionMeasures ErosionDiagnostics<Dim>::measure(const DemState& dem,
       ++m.fines_above;
       m.fines_above_mass += grain_density_ * 4.0 / 3.0 * M_PI * a.radius * a.radius * a.radius;
     }
+    if (a.body == -1 && (a.x[h] < lo0_ || a.x[h] > hi0_ || z < bottom0_)) ++m.fines_out_of_window;
     const int c = static_cast<int>(std::floor((a.x[h] - lo0_) / kColumn));
     if (c >= 0 && c < columns) top[c] = std::max(top[c], z + a.radius);
   }
@@ -84,14 +85,14 @@ ErosionMeasures ErosionDiagnostics<Dim>::measure(const DemState& dem,
 
 template <int Dim>
 std::vector<std::string> ErosionDiagnostics<Dim>::columns() {
-  return {"fines_above_surface", "fines_above_mass", "max_pore_speed_ratio", "surface_height",
-          "skeleton_displacement"};
+  return {"fines_above_surface",  "fines_above_mass", "fines_out_of_window",
+          "max_pore_speed_ratio", "surface_height",   "skeleton_displacement"};
 }
 
 template <int Dim>
 std::vector<double> ErosionDiagnostics<Dim>::row(const ErosionMeasures& m) {
-  return {double(m.fines_above), m.fines_above_mass, m.max_pore_speed_ratio, m.surface_height,
-          m.skeleton_displacement};
+  return {double(m.fines_above),  m.fines_above_mass, double(m.fines_out_of_window),
+          m.max_pore_speed_ratio, m.surface_height,   m.skeleton_displacement};
 }
 
 template class ErosionDiagnostics<2>;

@@ -16,6 +16,9 @@ namespace isphdem {
 struct ErosionMeasures {
   int fines_above = 0;          // free spheres entirely above the initial layer surface
   double fines_above_mass = 0;  // their mass [kg] (grain density x sphere volume)
+  // Free spheres carried out of the layer's window: centre beside its initial horizontal extent
+  // (over an inner wall in the seed's tank) or below its initial bottom (through the mesh).
+  int fines_out_of_window = 0;
   // Largest interstitial fluid speed |v_D| / eps among fluid particles inside the initial layer,
   // divided by the reference speed (v_in).
   double max_pore_speed_ratio = 0;

@@ -38,6 +38,7 @@ TEST(ErosionDiagnostics, InitialLayerHasNothingAboveAndItsOwnSurface) {
   EXPECT_NEAR(d.initial_surface(), 0.004, 1e-15);
   const auto m = d.measure(s, isph::Particles<2>{});
   EXPECT_EQ(m.fines_above, 0);
+  EXPECT_EQ(m.fines_out_of_window, 0);
   EXPECT_NEAR(m.surface_height, 0.004, 1e-15);
   EXPECT_EQ(m.skeleton_displacement, 0.0);
 }
@@ -48,6 +49,10 @@ TEST(ErosionDiagnostics, EjectedFinesMovedClumpAndPoreJet) {
   DemState s = s0;
   s.atoms[3].x[1] = 0.0046;                // bottom just above the initial surface (0.004): counted
   s.atoms[7].x[1] = 0.0044;                // still overlaps the initial surface: not counted
+  s.atoms[0].x[0] = -0.0002;               // centre left of the layer (x >= 0): out of the window
+  s.atoms[38].x[0] = 0.0104;               // right of it (x <= 10 mm): out
+  s.atoms[39].x[0] = 0.0099;               // moved right but still inside: not counted
+  s.atoms[21].x[1] = -0.0001;              // below the layer's bottom (y >= 0): out
   s.bodies[0].x = {0.008, 0.006, 0.0005};  // moved by (3, 4) mm
   isph::Particles<2> fluid;
   fluid.add(isph::Vec<2>(0.002, 0.002), isph::Vec<2>(0.0, 0.01), isph::kFluid);  // in the layer
@@ -56,6 +61,7 @@ TEST(ErosionDiagnostics, EjectedFinesMovedClumpAndPoreJet) {
   fluid.porosity = {0.5, 1.0, 1.0};
   const auto m = d.measure(s, fluid);
   EXPECT_EQ(m.fines_above, 1);
+  EXPECT_EQ(m.fines_out_of_window, 3);
   EXPECT_NEAR(m.fines_above_mass, 2600.0 * 4.0 / 3.0 * M_PI * 1.25e-10, 1e-20);
   EXPECT_NEAR(m.skeleton_displacement, 0.005, 1e-15);
   EXPECT_NEAR(m.max_pore_speed_ratio, 0.01 / 0.5 / 0.005, 1e-12);  // interstitial speed / v_in
