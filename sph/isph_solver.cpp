@@ -103,11 +103,6 @@ StepStats IsphSolver<Dim>::step(double dt) {
     follow_enclosing_solids(particles_, nb_, config_.pocket_solid_fraction, config_.density, dt);
     shift(dt);
     advect(dt, stats);
-    if (config_.free_surface && config_.surface_exchange && config_.gravity.squaredNorm() > 0.0) {
-      const auto c = exchange_surface_particles(
-          particles_, nb_, domain_, Vec<Dim>(-config_.gravity.normalized()), config_.exchange);
-      stats.surface_exchanges = c.gaps_filled + c.voids_filled;
-    }
   }
   time_ += dt;
   ++steps_;

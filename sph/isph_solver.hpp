@@ -25,7 +25,6 @@
 #include "porous_medium.hpp"
 #include "pressure_equation.hpp"
 #include "shifting.hpp"
-#include "surface_exchange.hpp"
 #include "time_step.hpp"
 
 namespace isph {
@@ -77,11 +76,6 @@ struct IsphConfig {
   // circulation tank, whose flow is 5 mm/s. Off by default: it moves the tank's break-up from
   // 1.33 s to 1.87 s, not to the 10 s (docs/fluid.md, "Known limitations").
   bool surface_refill = false;
-  // With gravity: moves one particle per defect between the surface row and the row under it
-  // (sph/surface_exchange.hpp): the nearest particle below into a gap of a stretched top row,
-  // a squeezed top-row particle into a void under it. Count and volume are kept.
-  bool surface_exchange = false;
-  SurfaceExchangeParams exchange;
   // Smagorinsky eddy viscosity nu_T = (C_s dx)^2 sqrt(2 S:S), added to nu in the viscous term.
   bool smagorinsky = false;
   double smagorinsky_constant = 0.1;
@@ -127,7 +121,6 @@ struct StepStats {
   // plus V0 for the rest: it shows compression or loss of volume that particle counts cannot.
   double fluid_volume = 0.0;
   double max_eddy_viscosity = 0.0;
-  int surface_exchanges = 0;  // particles moved by surface_exchange in this step
 };
 
 template <int Dim>

@@ -16,10 +16,7 @@ void IsphSolver<Dim>::shift(double dt) {
   for (int i = 0; i < n; ++i) {
     // With surface_refill every particle that is not on the surface shifts freely: voids under
     // the top row (return flow beside the walls) are otherwise closed by nothing.
-    // So does surface_exchange: a particle moved into a gap of the top row leaves a void.
-    const bool free_shift =
-        full_support_[i] ||
-        ((!surface_depth_.empty() || config_.surface_exchange) && !P.surface[i]);
+    const bool free_shift = full_support_[i] || (!surface_depth_.empty() && !P.surface[i]);
     shift_mode_[i] = P.kind[i] != kFluid ? 0 : (free_shift ? 2 : 1);
     // Shifting repairs disorder inside the fluid. A splash tip or a toe particle whose support
     // is mostly wall has no meaningful concentration gradient: its shift came out at the cap,

@@ -49,8 +49,6 @@ std::vector<std::string> fluid_scene_keys() {
           "solver.surface_divergence",
           "solver.surface_scan",
           "solver.surface_refill",
-          "solver.surface_exchange",
-          "solver.surface_exchange_gap",
           "solver.smagorinsky",
           "solver.smagorinsky_constant",
           "inflow.min",
@@ -261,10 +259,6 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
   cfg.surface.divergence = c.positive("solver.surface_divergence", Dim == 2 ? 1.5 : 2.4);
   cfg.surface.scan = c.boolean("solver.surface_scan", cfg.surface.scan);
   cfg.surface_refill = c.boolean("solver.surface_refill", cfg.surface_refill);
-  cfg.surface_exchange = c.boolean("solver.surface_exchange", cfg.surface_exchange);
-  cfg.exchange.gap = c.positive("solver.surface_exchange_gap", cfg.exchange.gap);
-  if (cfg.exchange.gap < 1.0 || cfg.exchange.gap > 2.4)
-    throw CaseError("'solver.surface_exchange_gap' must lie between 1 and 2.4 (spacings)");
   cfg.smagorinsky = c.boolean("solver.smagorinsky", cfg.smagorinsky);
   cfg.smagorinsky_constant = c.positive("solver.smagorinsky_constant", cfg.smagorinsky_constant);
 

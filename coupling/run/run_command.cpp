@@ -116,9 +116,9 @@ int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
   }
 
   const std::vector<std::string> columns{
-      "time",           "step",         "wall_seconds",       "ppe_iterations",
-      "max_speed",      "dt",           "ppe_residual",       "surface_particles",
-      "kinetic_energy", "fluid_volume", "max_eddy_viscosity", "surface_exchanges"};
+      "time",           "step",         "wall_seconds",      "ppe_iterations",
+      "max_speed",      "dt",           "ppe_residual",      "surface_particles",
+      "kinetic_energy", "fluid_volume", "max_eddy_viscosity"};
   report.check_columns(columns);  // before the writer clears an earlier run's output
   SnapshotWriter writer(args.out);
   // The case as run, overrides applied, next to the results.
@@ -138,10 +138,9 @@ int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
   const double start = omp_get_wtime();
   ProgressLine progress(settings.t_end, !args.quiet);
   snapshot();
-  long ppe_total = 0, exchanges = 0;
+  long ppe_total = 0;
   auto after_step = [&](const isph::StepStats& st) {
     ppe_total += st.ppe_iterations;
-    exchanges += st.surface_exchanges;
     const long step = solver.steps();
     if (step % settings.diagnostics_every == 0) {
       double ke = 0.0;
@@ -150,8 +149,7 @@ int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
           ke += 0.5 * solver.config().density * P.volume * P.v[i].squaredNorm();
       diagnostics.row({solver.time(), double(step), omp_get_wtime() - start,
                        double(st.ppe_iterations), st.max_speed, st.dt, st.ppe_residual,
-                       double(st.surface_particles), ke, st.fluid_volume, st.max_eddy_viscosity,
-                       double(exchanges)});
+                       double(st.surface_particles), ke, st.fluid_volume, st.max_eddy_viscosity});
     }
     progress.update(solver.time(), step);
   };
