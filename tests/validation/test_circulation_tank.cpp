@@ -67,14 +67,17 @@ WindowSample window_flux(const isph::IsphSolver<2>& s) {
 
 struct TankResult {
   double t = 0.0, flux = 0.0, forced = 0.0, v_max = 0.0, v_in = 0.0;
+  double volume_start = 0.0, volume_end = 0.0;  // fluid volume from the number densities
   int outside = 0;
   std::string failure;
 };
 
-TankResult run_tank(const std::string& file, double t_end) {
+TankResult run_tank(const std::string& file, double t_end,
+                    const std::vector<std::string>& extra = {}) {
   // The short run starts the pump at once (no ramp) so that its second half is at full v_in.
   std::vector<std::string> set = {"time.end=" + std::to_string(t_end)};
   if (t_end < 1.0) set.push_back("inflow.ramp=0");
+  set.insert(set.end(), extra.begin(), extra.end());
   const CaseFile c =
       CaseFile::load(std::string(ISPHDEM_SOURCE_DIR) + "/examples/circulation_tank_2d/" + file, set,
                      all_fluid_keys());
@@ -89,6 +92,8 @@ TankResult run_tank(const std::string& file, double t_end) {
   try {
     run.run_until(t_end, [&](const isph::StepStats& st) {
       out.v_max = std::max(out.v_max, st.max_speed);
+      if (out.volume_start == 0.0) out.volume_start = st.fluid_volume;
+      out.volume_end = st.fluid_volume;
       if (s.time() < 0.5 * t_end) return;
       const WindowSample w = window_flux(s);
       sum += w.flux;
@@ -113,11 +118,12 @@ TankResult run_tank(const std::string& file, double t_end) {
   std::printf(
       "  %s: t = %.2f s in %ld steps; window flux %.4e m^2/s (min %.4e, max %.4e over t >= %.2f "
       "s), forced %.4e: error %+.2f%% (slab-volume estimate %+.2f%%); max speed %.4f m/s "
-      "(%.1f v_in); particles outside %d\n",
+      "(%.1f v_in); particles outside %d; fluid volume %+.3f%%\n",
       file.c_str(), out.t, s.steps(), out.flux, lo, hi, 0.5 * t_end, out.forced,
       100.0 * (out.flux - out.forced) / out.forced,
       samples > 0 ? 100.0 * (sum_volume / samples - out.forced) / out.forced : 0.0, out.v_max,
-      out.v_max / out.v_in, out.outside);
+      out.v_max / out.v_in, out.outside,
+      100.0 * (out.volume_end - out.volume_start) / std::max(out.volume_start, 1e-300));
   if (!out.failure.empty()) std::printf("  stopped: %s\n", out.failure.c_str());
   return out;
 }
@@ -135,13 +141,28 @@ const TankResult& closed_tank() {
   return r;
 }
 
-TEST(CirculationTank, StaysStableAndNothingEscapes) {
-  const auto& r = tank();
+// The criteria for the free surface: it reaches the end, nothing leaves the tank, no jet,
+// and the fluid volume stays within 0.5% of its start.
+void expect_surface_survives(const TankResult& r, double t_end) {
   EXPECT_TRUE(r.failure.empty()) << r.failure;
-  EXPECT_GE(r.t, CIRCULATION_TANK_END - 1e-9);
+  EXPECT_GE(r.t, t_end - 1e-9);
   EXPECT_EQ(r.outside, 0);
   // The forcing drives a slow circulation; a spurious jet would show as a speed far above v_in.
   EXPECT_LT(r.v_max, 10.0 * r.v_in);
+  EXPECT_LT(std::abs(r.volume_end - r.volume_start), 0.005 * r.volume_start);
+}
+
+TEST(CirculationTank, StaysStableAndNothingEscapes) {
+  expect_surface_survives(tank(), CIRCULATION_TANK_END);
+}
+
+// The seed's faster upwelling, 2 cm/s, for 1 s (the pump ramped in over 0.5 s): the quickest
+// reproducer of the free surface's break-up over the upwelling (docs/fluid.md). Today the top
+// layer breaks at 0.45 s (0.5 m/s at 0.49 s) and a particle leaves the domain at 0.59 s; the
+// 0.5 cm/s tank breaks at 1.33 s.
+TEST(CirculationTank, FastUpwellingKeepsItsSurface) {
+  const TankResult r = run_tank("case.toml", 1.0, {"inflow.velocity=0.02"});
+  expect_surface_survives(r, 1.0);
 }
 
 TEST(CirculationTank, WindowFluxEqualsForcedFlux) {
