@@ -10,7 +10,8 @@ down by m g - F_y, since it does not accelerate; fines_lifted_covered counts the
 a grain touching them from above. The single-sphere terminal speed (Schiller-
 Naumann drag, the fine in clear water) is the pore speed a fine above the surface needs to rise.
 
-Writes OUT/erosion_forces.csv (one row per snapshot) and prints a summary.
+Writes OUT/erosion_forces.csv (one row per snapshot) and prints a summary over the snapshots
+after SETTLED s (the clumps at the surface rearrange in the first 0.3 s). 2D runs: up is y.
 usage: erosion_forces.py OUT --vin V [--depth 0.003] [--rho-s 2600] [--rho 1000] [--nu 1e-6]
 """
 import argparse
@@ -23,6 +24,9 @@ import sys
 
 import h5py
 import numpy as np
+
+
+SETTLED = 0.25  # s
 
 
 def terminal_speed(d, rho_s, rho, nu, g=9.81):
@@ -65,7 +69,7 @@ def main():
     if not paths:
         sys.exit(f"erosion_forces: no snap_*.h5 in {args.out}")
     with h5py.File(paths[0], "r") as f:
-        x0, r0 = f["/dem/position"][...], f["/dem/radius"][...]
+        x0, r0, body0 = f["/dem/position"][...], f["/dem/radius"][...], f["/dem/body"][...]
     surface0 = layer_surface(x0, r0)
     rows = []
     for path in paths:
@@ -77,6 +81,7 @@ def main():
             kind, eps = f["/fluid/kind"][...], f["/fluid/porosity"][...]
         top = (body == -1) & (x[:, 1] + r > surface0 - args.depth)
         fluid = kind == 0
+        xf = xf[fluid]
         pore = np.linalg.norm(vf[fluid], axis=1) / np.maximum(eps[fluid], 1e-6)
         ratios, speeds, grain_speeds, covered = [], [], [], 0
         for k in np.flatnonzero(top):
@@ -89,7 +94,7 @@ def main():
                 above = (dist < r + r[k] + 1e-4) & (x[:, 1] > x[k, 1] + 0.5 * r[k])
                 above[k] = False
                 covered += int(above.any())
-            near = np.linalg.norm(xf[fluid] - x[k, :2], axis=1) < r[k] + 1e-3
+            near = np.linalg.norm(xf - x[k, :2], axis=1) < r[k] + 1e-3
             speeds.append(pore[near].max() / args.vin if near.any() else 0.0)
             grain_speeds.append(np.linalg.norm(v[k]) / args.vin)
         ratios = np.array(ratios)
@@ -107,9 +112,9 @@ def main():
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
         w.writerows(rows)
-    d = 2.0 * float(r0[body == -1].mean()) if (body == -1).any() else 1e-3
+    d = 2.0 * float(r0[body0 == -1].mean()) if (body0 == -1).any() else 1e-3
     ut = terminal_speed(d, args.rho_s, args.rho, args.nu)
-    late = [row for row in rows if row["time"] >= 0.25] or rows
+    late = [row for row in rows if row["time"] >= SETTLED] or rows
     print(f"initial layer surface {1e3 * surface0:.2f} mm; fines within {1e3 * args.depth:.1f} mm "
           f"of it: {rows[0]['fines_near_surface']}")
     print(f"single-fine terminal speed (d = {1e3 * d:.2f} mm): {100 * ut:.1f} cm/s = "
