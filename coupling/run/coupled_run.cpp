@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -25,7 +26,8 @@ CoupledRun<Dim>::CoupledRun(FluidScene<Dim> scene, const RunSettings& settings, 
       backend_(backend),
       substeps_(substeps),
       dt_(settings.fixed_dt.value_or(0.0)),
-      stages_(std::move(stages)) {
+      stages_(std::move(stages)),
+      energy_(0.1 * fluid_.solver().particles().spacing / (dt_ > 0 ? dt_ : 1.0)) {
   // The DEM advances a whole number of its own steps per fluid step, so an automatic fluid dt
   // (changing every step) cannot be honoured.
   if (!settings.fixed_dt)
@@ -72,6 +74,7 @@ isph::StepStats CoupledRun<Dim>::advance() {
   backend_.advance(substeps_);
   check_no_grain_lost(backend_.state());
   check_overlap(backend_.state());
+  check_energy(backend_.state());
   return stats;
 }
 
@@ -92,6 +95,28 @@ void CoupledRun<Dim>::check_overlap(const DemState& now) {
           "timestep (a tenth of the contact time or less) and raise [dem] substeps with it, or "
           "look for a load that drives grains into each other",
       "grain_overlap");
+}
+
+template <int Dim>
+void CoupledRun<Dim>::check_energy(const DemState& now) {
+  const auto grown = energy_.observe(grain_mean_square_speed(now));
+  if (!grown) return;
+  const double t1 = fluid_.solver().time();
+  const double dx = fluid_.solver().particles().spacing;
+  throw isph::SimulationError(
+      "the grains' kinetic energy grew " + isph::format_number(grown->now / grown->before, 3) +
+          " times from one window of " + std::to_string(kEnergyGrowthWindow) +
+          " fluid steps to the next, up to t = " + isph::format_number(t1, 6) +
+          " s, and at least " + isph::format_number(kEnergyGrowthFactor, 3) + " times for the " +
+          std::to_string(kEnergyGrowthWindow) + " steps before (largest mean grain speed " +
+          isph::format_number(std::sqrt(grown->before), 3) + " -> " +
+          isph::format_number(std::sqrt(grown->now), 3) +
+          " m/s, against dx/dt = " + isph::format_number(dx / dt_, 3) +
+          " m/s): the exchange between fluid and grains is unstable at this step. Shorten "
+          "time.dt (and [dem] substeps with it, keeping the DEM step), and check that the grains' "
+          "drag response time m/K and, for resolved bodies, their mass against the fluid they "
+          "displace are resolved by it (docs/study.md, where each method fails)",
+      "energy_growth");
 }
 
 template <int Dim>

@@ -10,6 +10,7 @@
 
 #include "coupling_stage.hpp"
 #include "dem/dem_backend.hpp"
+#include "run/energy_growth.hpp"
 #include "run/fluid_run.hpp"
 
 namespace isphdem {
@@ -56,11 +57,15 @@ class CoupledRun {
   void check_no_grain_lost(const DemState& now) const;
   // Throws isph::SimulationError (cause "grain_overlap") past kMaxGrainOverlap.
   void check_overlap(const DemState& now);
+  // Throws isph::SimulationError (cause "energy_growth") when the grains' kinetic energy grows
+  // faster than the step resolves (energy_growth.hpp).
+  void check_energy(const DemState& now);
 
   DemLoads loads_;
   CoupledTimings timings_;
   std::vector<DemAtom> atoms_before_;  // the grains at the start of the step, by tag
   double max_overlap_ = 0.0;
+  EnergyGrowthMonitor energy_;
 };
 
 }  // namespace isphdem
