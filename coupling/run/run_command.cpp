@@ -241,6 +241,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
                                    "atoms",
                                    "bed_height",
                                    "max_grain_speed",
+                                   "max_body_speed",
                                    "min_porosity",
                                    "floored_porosity",
                                    "drag_total_up",
@@ -328,10 +329,13 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     if (step % settings.diagnostics_every == 0) {
       const DemState& state = backend.state();  // collective
       if (rank == 0) {
-        double vmax = 0.0, emin = 1.0;
+        auto speed = [](const Vec3& v) {
+          return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        };
+        double vmax = 0.0, body_vmax = 0.0, emin = 1.0;
         for (const auto& a : state.atoms)
-          if (a.body == -1)
-            vmax = std::max(vmax, std::sqrt(a.v[0] * a.v[0] + a.v[1] * a.v[1] + a.v[2] * a.v[2]));
+          if (a.body == -1) vmax = std::max(vmax, speed(a.v));
+        for (const auto& b : state.bodies) body_vmax = std::max(body_vmax, speed(b.v));
         for (std::size_t i = 0; i < P.size(); ++i)
           if (P.kind[i] != isph::kWall) emin = std::min(emin, P.porosity[i]);
         double drag_up = 0.0, res_up = 0.0;
@@ -355,6 +359,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
                                 double(state.atoms.size()),
                                 bed_height(state, up),
                                 vmax,
+                                body_vmax,
                                 emin,
                                 double(floored),
                                 drag_up,

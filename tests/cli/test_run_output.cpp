@@ -58,8 +58,8 @@ TEST(RunOutput, CoupledCaseWritesDemLoadsAndBedHeight) {
   std::ifstream csv(dir / "out" / "diagnostics.csv");
   std::string header;
   std::getline(csv, header);
-  for (const char* col : {"bed_height", "max_grain_speed", "min_porosity", "drag_total_up",
-                          "dem_seconds", "coupling_seconds", "fluid_seconds"})
+  for (const char* col : {"bed_height", "max_grain_speed", "max_body_speed", "min_porosity",
+                          "drag_total_up", "dem_seconds", "coupling_seconds", "fluid_seconds"})
     EXPECT_NE(header.find(col), std::string::npos) << col;
   // The grain's hydrodynamic load after 0.02 s: buoyancy plus drag, upward, below its weight.
   if (!std::filesystem::exists("/usr/bin/python3")) GTEST_SKIP() << "no /usr/bin/python3";

@@ -113,6 +113,42 @@ TEST(Study, UnresolvedSettlingHoldsBelowHalfASpacingAndDepartsAtOne) {
   EXPECT_GT(std::abs(e_full), 3 * std::abs(e_small));
 }
 
+// The reduced clump-stability study (examples/studies/clump_stability.toml at one fluid step):
+// the PMS force is exchanged explicitly once per step, so a body much lighter than the water it
+// pushes aside (its added mass, about rho_f V for a disc) overshoots and the run blows up, while
+// a body above the measured boundary (rho_s/rho_f between 0.25 and 0.3) rises steadily.
+TEST(Study, ResolvedBodyFarLighterThanTheWaterBlowsUpAndAHeavierOneRises) {
+  const auto dir = scratch("study_clump");
+  const fs::path f = dir / "study.toml";
+  write_file(f, "base = \"" + example("settling_clump_2d") +
+                    "\"\n[set]\n\"time.end\" = 0.1\n\"output.interval\" = 0.05\n"
+                    "\"time.dt\" = 5e-4\n\"dem.substeps\" = 500\n"
+                    "[grid]\n\"dem.variables.rho_s\" = [200, 400]\n");
+  const Result r = study(f.string() + " --out " + (dir / "out").string() + " -j 2");
+  std::printf("%s", r.output.c_str());
+  ASSERT_EQ(r.exit_code, 0);
+  std::map<std::string, Row> by_name;
+  for (const auto& row : read_csv(dir / "out" / "study.csv")) by_name[row.at("point")] = row;
+  ASSERT_EQ(by_name.size(), 2u);
+  const Row& light = by_name.at("rho_s=200");
+  const Row& heavier = by_name.at("rho_s=400");
+  std::printf("rho_s 200: %s %s at t = %s s; rho_s 400: %s\n", light.at("status").c_str(),
+              light.at("cause").c_str(), light.at("time").c_str(), heavier.at("status").c_str());
+  EXPECT_EQ(light.at("status"), "stopped");
+  EXPECT_TRUE(light.at("cause") == "cfl" || light.at("cause") == "energy_growth")
+      << light.at("cause");
+  EXPECT_LT(std::stod(light.at("time")), 0.05);  // blown up well before the end
+  ASSERT_EQ(heavier.at("status"), "finished");
+  // The stable body rises: buoyancy (rho_f V g) beats its weight, at a speed set by its drag
+  // (measured 0.12-0.14 m/s at 0.1 s for dt from 5e-5 to 2e-3 s), far from a blow-up's m/s.
+  const auto rows = read_csv(dir / "out" / "rho_s=400" / "diagnostics.csv");
+  ASSERT_FALSE(rows.empty());
+  const double v = std::stod(rows.back().at("max_body_speed"));
+  std::printf("rho_s 400: body speed %.3f m/s at t = 0.1 s\n", v);
+  EXPECT_GT(v, 0.05);
+  EXPECT_LT(v, 0.3);
+}
+
 TEST(Study, KilledStudyResumesWithoutRerunningFinishedPoints) {
   const auto dir = scratch("study_resume");
   // One quick point, then one that takes a few times longer: the study is killed while the
