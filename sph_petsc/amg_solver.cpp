@@ -35,9 +35,21 @@ struct Owned {
   }
 };
 
-// The case file's options first, then PETSC_OPTIONS again: the environment wins, as PETSc's
-// command line wins over an options file.
+// BoomerAMG's setup, rebuilt every step as the particles move, is what amg costs. PETSc's
+// PCHYPRE defaults (Falgout coarsening, classical interpolation, no truncation) build a heavy
+// hierarchy on SPH stencils; HMIS coarsening with extended+i interpolation truncated to 4 entries
+// per row and one level of aggressive coarsening (hypre's own advice for 3D and large stencils)
+// cut the setup 2.6x on the closed erosion tank (9.9 to 3.6 ms/step), 1.4x on the 40k-particle
+// Taylor-Green and 2.3x on the 351k 3D dam break, at 1-2 more iterations per step (2026-12-04,
+// docs/fluid.md). Inserted first, so that the case file and PETSC_OPTIONS override them.
+constexpr const char* kBoomerAmgDefaults =
+    "-pc_hypre_boomeramg_coarsen_type HMIS -pc_hypre_boomeramg_interp_type ext+i "
+    "-pc_hypre_boomeramg_P_max 4 -pc_hypre_boomeramg_agg_nl 1";
+
+// The built-in defaults, the case file's options, then PETSC_OPTIONS again: the environment
+// wins, as PETSc's command line wins over an options file.
 void insert_options(const std::string& from_case) {
+  check_petsc(PetscOptionsInsertString(nullptr, kBoomerAmgDefaults), "setting BoomerAMG defaults");
   if (!from_case.empty())
     check_petsc(PetscOptionsInsertString(nullptr, from_case.c_str()),
                 "reading [solver.petsc] options");
