@@ -7,6 +7,7 @@
 #include <string>
 
 #include "atom.h"
+#include "domain.h"
 #include "fix_couple_isph.h"
 #include "fix_multisphere.h"
 #include "input.h"
@@ -107,6 +108,7 @@ void LiggghtsBackend::initialize(const DemSetup& setup) {
   set_liggghts_context(lmp_, "a command isphdem gave after the script");
   for (const auto& c : setup.commands) command(c);
   set_liggghts_context(lmp_, "the DEM substeps of a fluid step");
+  ran_ = false;
   state_.time = 0.0;
   state_stale_ = true;
 }
@@ -114,6 +116,7 @@ void LiggghtsBackend::initialize(const DemSetup& setup) {
 void LiggghtsBackend::command(const std::string& line) {
   lmp_->input->one(line.c_str());
   state_stale_ = true;
+  if (line.rfind("run ", 0) == 0) ran_ = true;
 }
 
 double LiggghtsBackend::timestep() const { return lmp_->update->dt; }
@@ -125,7 +128,18 @@ void LiggghtsBackend::advance(int n_substeps) {
   state_.time += n_substeps * dt;
 }
 
-void LiggghtsBackend::finalize() { lmp_.reset(); }
+void LiggghtsBackend::finalize() {
+  // LIGGGHTS hands a restart's multisphere data to fix multisphere only when a run sets it up,
+  // and its Modify destructor stops with an error (Error::all, exit() inside a destructor: a
+  // segmentation fault) when it never was: a case refused after the DEM script ran (a fluid step
+  // beyond the stability limits, a bad coupling key) crashed on the way out instead of showing
+  // its message. A run of no steps sets it up (where there is a box to run in).
+  if (lmp_ && !ran_ && lmp_->domain->box_exist) {
+    set_liggghts_context(lmp_, "the run of 0 steps isphdem gives before closing LIGGGHTS");
+    command("run 0 post no");
+  }
+  lmp_.reset();
+}
 
 LAMMPS_NS::FixCoupleIsph* LiggghtsBackend::coupling_fix() {
   LAMMPS_NS::FixCoupleIsph* found = nullptr;

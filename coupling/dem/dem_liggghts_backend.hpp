@@ -53,6 +53,7 @@ class LiggghtsBackend final : public DemBackend {
   LammpsHandle lmp_;
   DemState state_;
   bool state_stale_ = true;
+  bool ran_ = false;  // a run command has set LIGGGHTS up since initialize()
 };
 
 }  // namespace isphdem

@@ -153,6 +153,23 @@ TEST(BadInput, CoupledCaseNeedsAFixedTimeStep) {
             std::string::npos);
 }
 
+// A coupled case refused after the DEM script has run (here the fluid step beyond the force
+// limit, found when the fluid is built) must stop with its own message. With a multisphere
+// restart LIGGGHTS refused to close before a run had set the clumps up (an error inside its
+// destructor: a segmentation fault instead of the message).
+TEST(BadInput, CoupledCaseRefusedAfterAMultisphereRestartShowsItsMessage) {
+  const auto dir = scratch("coupled_refused_after_restart");
+  const Result r =
+      run(std::string(ISPHDEM_SOURCE_DIR) + "/examples/internal_erosion_2d/reduced.toml --out " +
+          (dir / "out").string() + " --set time.dt=5e-3 --set dem.substeps=5000");
+  std::printf("%s", r.output.c_str());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("is beyond the stable limit"), std::string::npos);
+  EXPECT_NE(r.output.find("force limit"), std::string::npos);
+  EXPECT_EQ(r.output.find("Segmentation fault"), std::string::npos);
+  EXPECT_EQ(r.output.find("LIGGGHTS stopped the run"), std::string::npos);
+}
+
 TEST(BadInput, UnresolvedWithoutDemNamesBothTables) {
   const Result r = run_bad_case(
       "unresolved_alone", with(kGoodCase, "[time]", "[unresolved]\ngrain_diameter = 1e-3\n[time]"));
