@@ -80,22 +80,33 @@ TEST(Study, ErrorFallsWithResolutionAndABadPointIsRecorded) {
   }
 }
 
+// Writes TEXT as DIR/study.toml, runs it two points at a time and returns the rows of its
+// study.csv by point name (none, and a failure, when the study itself failed).
+std::map<std::string, Row> run_small_study(const fs::path& dir, const std::string& text) {
+  const fs::path f = dir / "study.toml";
+  write_file(f, text);
+  const Result r = study(f.string() + " --out " + (dir / "out").string() + " -j 2");
+  std::printf("%s", r.output.c_str());
+  std::map<std::string, Row> by_name;
+  if (r.exit_code != 0) {
+    ADD_FAILURE() << "the study exited with " << r.exit_code;
+    return by_name;
+  }
+  for (const auto& row : read_csv(dir / "out" / "study.csv")) by_name[row.at("point")] = row;
+  return by_name;
+}
+
 // The reduced settling-grain study (examples/studies/settling_grain.toml at two of its spacings):
 // unresolved drag is validated where the grain is small against the fluid spacing and departs as
 // the grain fills its fluid particle (its volume spread over fewer particles lowers the porosity
 // around it, and the porosity-dependent drag slows it). The study must record both.
 TEST(Study, UnresolvedSettlingHoldsBelowHalfASpacingAndDepartsAtOne) {
-  const auto dir = scratch("study_settling");
-  const fs::path f = dir / "study.toml";
-  write_file(f, "base = \"" + example("settling_grain") +
-                    "\"\n[set]\n\"output.interval\" = 0.1\n"
-                    "[grid]\n\"particles.spacing\" = [0.0025, 0.001]\n"
-                    "[plot]\nmetric = \"terminal_velocity\"\nlabel = \"particles.spacing\"\n");
-  const Result r = study(f.string() + " --out " + (dir / "out").string() + " -j 2");
-  std::printf("%s", r.output.c_str());
-  ASSERT_EQ(r.exit_code, 0);
-  std::map<std::string, Row> by_name;
-  for (const auto& row : read_csv(dir / "out" / "study.csv")) by_name[row.at("point")] = row;
+  const auto by_name = run_small_study(
+      scratch("study_settling"),
+      "base = \"" + example("settling_grain") +
+          "\"\n[set]\n\"output.interval\" = 0.1\n"
+          "[grid]\n\"particles.spacing\" = [0.0025, 0.001]\n"
+          "[plot]\nmetric = \"terminal_velocity\"\nlabel = \"particles.spacing\"\n");
   ASSERT_EQ(by_name.size(), 2u);
   const Row& small = by_name.at("spacing=0.0025");  // d/dx = 0.4
   const Row& full = by_name.at("spacing=0.001");    // d/dx = 1
@@ -119,16 +130,11 @@ TEST(Study, UnresolvedSettlingHoldsBelowHalfASpacingAndDepartsAtOne) {
 // a body above the measured boundary (rho_s/rho_f between 0.25 and 0.3) rises steadily.
 TEST(Study, ResolvedBodyFarLighterThanTheWaterBlowsUpAndAHeavierOneRises) {
   const auto dir = scratch("study_clump");
-  const fs::path f = dir / "study.toml";
-  write_file(f, "base = \"" + example("settling_clump_2d") +
-                    "\"\n[set]\n\"time.end\" = 0.1\n\"output.interval\" = 0.05\n"
-                    "\"time.dt\" = 5e-4\n\"dem.substeps\" = 500\n"
-                    "[grid]\n\"dem.variables.rho_s\" = [200, 400]\n");
-  const Result r = study(f.string() + " --out " + (dir / "out").string() + " -j 2");
-  std::printf("%s", r.output.c_str());
-  ASSERT_EQ(r.exit_code, 0);
-  std::map<std::string, Row> by_name;
-  for (const auto& row : read_csv(dir / "out" / "study.csv")) by_name[row.at("point")] = row;
+  const auto by_name =
+      run_small_study(dir, "base = \"" + example("settling_clump_2d") +
+                               "\"\n[set]\n\"time.end\" = 0.1\n\"output.interval\" = 0.05\n"
+                               "\"time.dt\" = 5e-4\n\"dem.substeps\" = 500\n"
+                               "[grid]\n\"dem.variables.rho_s\" = [200, 400]\n");
   ASSERT_EQ(by_name.size(), 2u);
   const Row& light = by_name.at("rho_s=200");
   const Row& heavier = by_name.at("rho_s=400");
