@@ -24,7 +24,9 @@ FluidRun<Dim>::FluidRun(FluidScene<Dim> scene, const RunSettings& settings)
       std::ostringstream m;
       m << "time.dt = " << *settings_.fixed_dt << " s is beyond the stable limit " << l.min()
         << " s (" << l.limiting() << " limit; CFL " << l.cfl << ", viscous " << l.viscous
-        << ", force " << l.force << " s): set time.dt below " << l.min() << " or use \"auto\"";
+        << ", force " << l.force << " s): set time.dt below " << l.min()
+        << (settings_.coupled ? " and [dem] substeps with it (time.dt = substeps x the DEM step)"
+                              : " or use \"auto\"");
       throw CaseError(m.str());
     }
   }

@@ -210,7 +210,11 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   const bool talk = rank == 0 && !args.quiet;
-  const RunSettings settings = parse_run_settings(given);
+  const RunSettings settings = [&] {
+    RunSettings s = parse_run_settings(given);
+    s.coupled = true;
+    return s;
+  }();
   const DemCaseConfig dem = dem_config(given);
   // Checked here as well as in CoupledRun so that it stops before LIGGGHTS writes its screen.
   if (!settings.fixed_dt)

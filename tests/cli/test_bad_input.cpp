@@ -166,6 +166,9 @@ TEST(BadInput, CoupledCaseRefusedAfterAMultisphereRestartShowsItsMessage) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("is beyond the stable limit"), std::string::npos);
   EXPECT_NE(r.output.find("force limit"), std::string::npos);
+  // A coupled step cannot be "auto": the advice names the DEM substeps instead.
+  EXPECT_NE(r.output.find("and [dem] substeps with it"), std::string::npos);
+  EXPECT_EQ(r.output.find("use \"auto\""), std::string::npos);
   EXPECT_EQ(r.output.find("Segmentation fault"), std::string::npos);
   EXPECT_EQ(r.output.find("LIGGGHTS stopped the run"), std::string::npos);
 }
