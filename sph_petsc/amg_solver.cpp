@@ -3,6 +3,7 @@
 #include <petscksp.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -41,15 +42,26 @@ struct Owned {
 // per row and one level of aggressive coarsening (hypre's own advice for 3D and large stencils)
 // cut the setup 2.6x on the closed erosion tank (9.9 to 3.6 ms/step), 1.4x on the 40k-particle
 // Taylor-Green and 2.3x on the 351k 3D dam break, at 1-2 more iterations per step (2026-12-04,
-// docs/fluid.md). Inserted first, so that the case file and PETSC_OPTIONS override them.
-constexpr const char* kBoomerAmgDefaults =
-    "-pc_hypre_boomeramg_coarsen_type HMIS -pc_hypre_boomeramg_interp_type ext+i "
-    "-pc_hypre_boomeramg_P_max 4 -pc_hypre_boomeramg_agg_nl 1";
+// docs/fluid.md). Names as PETSc's options database keeps them (without the dash).
+constexpr std::array<std::array<const char*, 2>, 4> kBoomerAmgDefaults{{
+    {"pc_hypre_boomeramg_coarsen_type", "HMIS"},
+    {"pc_hypre_boomeramg_interp_type", "ext+i"},
+    {"pc_hypre_boomeramg_P_max", "4"},
+    {"pc_hypre_boomeramg_agg_nl", "1"},
+}};
 
-// The built-in defaults, the case file's options, then PETSC_OPTIONS again: the environment
-// wins, as PETSc's command line wins over an options file.
+// The built-in defaults where nobody set the option, the case file's options, then
+// PETSC_OPTIONS again: the environment wins, as PETSc's command line wins over an options file.
 void insert_options(const std::string& from_case) {
-  check_petsc(PetscOptionsInsertString(nullptr, kBoomerAmgDefaults), "setting BoomerAMG defaults");
+  for (const auto& [name, value] : kBoomerAmgDefaults) {
+    const std::string option = std::string("-") + name;
+    PetscBool set = PETSC_FALSE;
+    check_petsc(PetscOptionsHasName(nullptr, nullptr, option.c_str(), &set),
+                "looking up a BoomerAMG default");
+    if (!set)
+      check_petsc(PetscOptionsSetValue(nullptr, option.c_str(), value),
+                  "setting a BoomerAMG default");
+  }
   if (!from_case.empty())
     check_petsc(PetscOptionsInsertString(nullptr, from_case.c_str()),
                 "reading [solver.petsc] options");
@@ -204,6 +216,12 @@ class AmgSolver : public LinearSolver {
 };
 
 }  // namespace
+
+bool is_builtin_amg_option(const std::string& name) {
+  for (const auto& d : kBoomerAmgDefaults)
+    if (name == d[0]) return true;
+  return false;
+}
 
 std::unique_ptr<LinearSolver> make_amg_solver(const LinearSolverConfig& config) {
   return std::make_unique<AmgSolver>(config);

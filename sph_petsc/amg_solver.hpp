@@ -10,12 +10,18 @@
 //    size, and rebuilt earlier once the iterations grow past 1.5x those right after a setup.
 // Needs a live PetscSession.
 #include <memory>
+#include <string>
 
 #include "linear_solver.hpp"
 
 namespace isph {
 
 std::unique_ptr<LinearSolver> make_amg_solver(const LinearSolverConfig& config);
+
+// Whether NAME (as PETSc's options database keeps it, without the dash) is one of the BoomerAMG
+// options isphdem sets itself: not the user's, so not to be reported when nothing read it (a run
+// with -pc_type other than hypre).
+bool is_builtin_amg_option(const std::string& name);
 
 // How many AMG solvers this process has made (PetscSession reports unused options only then).
 int amg_solvers_created();

@@ -31,7 +31,7 @@ PetscSession::~PetscSession() {
     char** values = nullptr;
     if (!PetscOptionsLeftGet(nullptr, &n, &names, &values)) {
       for (PetscInt k = 0; k < n; ++k)
-        if (std::string(names[k]) != "no_signal_handler")
+        if (std::string(names[k]) != "no_signal_handler" && !is_builtin_amg_option(names[k]))
           std::fprintf(stderr,
                        "isphdem: warning: PETSc option -%s was set but never used "
                        "(misspelt, or for a solver this run does not have)\n",

@@ -25,6 +25,15 @@ TEST(PetscOptions, CaseFileOptionsReachTheSolverAndDoneLineReportsThePpe) {
   EXPECT_EQ(r.output.find("never used"), std::string::npos) << r.output;
 }
 
+// isphdem sets BoomerAMG's coarsening itself (sph_petsc/amg_solver.cpp); a user who swaps the
+// preconditioner leaves those options unread, and they are not the user's to be warned about.
+TEST(PetscOptions, AnotherPreconditionerLeavesNoWarningAboutIsphdemsBoomerAmgDefaults) {
+  const auto dir = scratch("petsc_other_pc");
+  const Result r = run(amg_case(dir) + " --set 'solver.petsc.options=\"-pc_type jacobi\"'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("never used"), std::string::npos) << r.output;
+}
+
 TEST(PetscOptions, EnvironmentOptionsReachTheSolverAndMisspeltOnesAreNamed) {
   const auto dir = scratch("petsc_env_options");
   const Result r = run_shell("PETSC_OPTIONS='-ksp_monitor -ksp_tyep gmres' " + isphdem() + " run " +
