@@ -1,8 +1,8 @@
 // The reduced internal-erosion case (examples/internal_erosion_2d/reduced.toml, issue 7): the
 // seed's contrast between the two coupling models in a small tank, 1 s at v_in = 0.5 cm/s, run
-// through `isphdem` as a user runs it (packing first, then both models). The seed: the
-// unresolved layer stays intact at 0.5 cm/s, while the semi-resolved one shows pore jets between
-// the coarse grains far faster than anything the unresolved model sees.
+// through `isphdem` as a user runs it (packed first by the erosion_reduced_packing fixture). The
+// seed: the unresolved layer stays intact at 0.5 cm/s, while the semi-resolved one shows pore jets
+// between the coarse grains far faster than anything the unresolved model sees.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -45,12 +45,9 @@ double median(std::vector<double> v) {
 
 TEST(ErosionReduced, SemiResolvedPoreJetsOutrunUnresolvedAndUnresolvedLayerStays) {
   const std::string dir = std::string(ISPHDEM_SOURCE_DIR) + "/examples/internal_erosion_2d";
-  const std::string pack = std::string(ISPHDEM_BINARY_DIR) + "/coupling/isphdem dem " + dir +
-                           "/in.packing -var case_dir " + dir +
-                           " -var packing packing_reduced.restart -var nclumps 6 -var nfines 32"
-                           " -var x_lo 0.010 -var x_hi 0.026 -var mesh_y 0.014 -var box_x 0.036"
-                           " -var box_y 0.07 -log none -screen /dev/null > /dev/null 2>&1";
-  ASSERT_EQ(std::system(pack.c_str()), 0) << pack;
+  // The packing (packing_reduced.restart) is the ctest fixture erosion_reduced_packing.
+  ASSERT_TRUE(std::filesystem::exists(dir + "/packing_reduced.restart"))
+      << "pack the layer first (ctest runs the erosion_reduced_packing fixture)";
   std::map<std::string, std::map<std::string, std::vector<double>>> d;
   for (const std::string model : {"unresolved", "semi-resolved"}) {
     const auto out = cli::scratch("erosion_reduced_" + model);
