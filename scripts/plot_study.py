@@ -5,7 +5,8 @@ One line per value of --series (e.g. coupling.model), |error| of --metric agains
 time of each point, each point labelled with its --label value (e.g. particles.spacing).
 Points that stopped early (blow-up, CFL stop) are drawn as crosses at their wall time on the
 lower edge, so that a method's failures show on the same chart; points that never ran are listed
-in the title.
+in the title. With --reference POINT (the study's `reference`), the errors are against that
+point, which is drawn apart as a star on the lower edge.
 
 With --stability X Y it draws instead how every point ended over two varied keys (e.g.
 particles.spacing and time.cfl), one panel per value of --series (e.g. coupling.model): finished
@@ -15,6 +16,7 @@ squares, and the stability boundary between the largest finished and the smalles
 each X.
 
 usage: plot_study.py STUDY_CSV [-o PNG] [--metric NAME] [--series KEY] [--label KEY]
+                     [--reference POINT]
        plot_study.py STUDY_CSV --stability X Y [-o PNG]
 """
 import argparse
@@ -42,6 +44,7 @@ def main():
     ap.add_argument("--metric", default=None, help="a metric column of study.csv (default: the first)")
     ap.add_argument("--series", default=None)
     ap.add_argument("--label", default=None)
+    ap.add_argument("--reference", default=None, help="the point the errors are measured against")
     ap.add_argument("--stability", nargs=2, metavar=("X", "Y"), default=None)
     args = ap.parse_args()
     with open(args.table, newline="") as f:
@@ -62,6 +65,8 @@ def main():
             sys.exit(f"plot_study: no column '{key}' in {args.table}")
 
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    reference = [r for r in rows if r["point"] == args.reference]
+    rows = [r for r in rows if r["point"] != args.reference]
     series = {}
     for r in rows:
         series.setdefault(r[args.series] if args.series else "", []).append(r)
@@ -70,7 +75,8 @@ def main():
     finite = [e for e in finite if math.isfinite(e) and e > 0]
     floor = min(finite) / 3 if finite else 1e-6
     for name, points in series.items():
-        done = [p for p in points if p["status"] == "finished"]
+        done = [p for p in points if p["status"] == "finished"
+                and math.isfinite(number(p[metric + "_error"]))]
         done.sort(key=lambda p: number(p["wall_seconds"]))
         x = [number(p["wall_seconds"]) for p in done]
         y = [max(abs(number(p[metric + "_error"])), floor) for p in done]
@@ -85,10 +91,13 @@ def main():
         if stopped:
             ax.plot([number(p["wall_seconds"]) for p in stopped], [floor] * len(stopped), "x",
                     color=line.get_color(), markersize=9, label=f"{name} stopped" if name else "stopped")
+    for r in reference:
+        ax.plot([number(r["wall_seconds"])], [floor], "*", color="black", markersize=12,
+                label=f"reference: {r['point']}")
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("wall time per point [s]")
-    ax.set_ylabel(f"|{metric} error|")
+    ax.set_ylabel(f"|{metric} error|" + (f" against {args.reference}" if reference else ""))
     title = f"{metric}: error against cost"
     if never:
         title += f"\n(not run: {', '.join(never)})"

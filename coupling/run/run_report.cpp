@@ -54,7 +54,9 @@ void RunReport::finish(bool talk) {
   }
   if (talk)
     for (const auto& m : result_.metrics) {
-      if (m.relative)
+      if (std::isnan(m.expected))
+        std::printf("  reference %s: %.6g\n", m.name.c_str(), m.value);
+      else if (m.relative)
         std::printf("  reference %s: %.6g against %.6g (%+.3g%%)\n", m.name.c_str(), m.value,
                     m.expected, 100 * m.error);
       else

@@ -62,8 +62,9 @@ std::vector<ReferenceMetric> parse_reference(const CaseFile& c) {
     const std::string error = t["error"].value_or(std::string("relative"));
     if (error != "relative" && error != "absolute")
       throw CaseError(context + ".error = \"" + error + "\": use \"relative\" or \"absolute\"");
-    metrics.push_back({*name, formula(t, "value", context), formula(t, "expected", context),
-                       error == "relative"});
+    std::optional<DiagnosticsExpression> expected;
+    if (t.contains("expected")) expected = formula(t, "expected", context);
+    metrics.push_back({*name, formula(t, "value", context), expected, error == "relative"});
   }
   return metrics;
 }
@@ -71,11 +72,18 @@ std::vector<ReferenceMetric> parse_reference(const CaseFile& c) {
 void check_reference_columns(const std::vector<ReferenceMetric>& metrics,
                              const std::vector<std::string>& columns) {
   for (const auto& m : metrics)
-    for (const auto* e : {&m.value, &m.expected})
+    for (const auto* e : {&m.value, m.expected ? &*m.expected : &m.value})
       for (const auto& col : e->columns())
         if (std::find(columns.begin(), columns.end(), col) == columns.end())
           throw CaseError("reference metric '" + m.name + "': this run writes no column '" + col +
                           "' to diagnostics.csv; the closest is '" + closest(col, columns) + "'");
+}
+
+void compare(MetricResult& r, double expected) {
+  r.expected = expected;
+  // Relative against zero is meaningless: fall back to the absolute difference.
+  r.relative = r.relative && expected != 0.0;
+  r.error = r.relative ? (r.value - expected) / std::abs(expected) : r.value - expected;
 }
 
 std::vector<MetricResult> evaluate_reference(const std::vector<ReferenceMetric>& metrics,
@@ -86,13 +94,13 @@ std::vector<MetricResult> evaluate_reference(const std::vector<ReferenceMetric>&
     r.name = m.name;
     try {
       r.value = m.value.evaluate(table);
-      r.expected = m.expected.evaluate(table);
+      r.expected = m.expected ? m.expected->evaluate(table) : NAN;
     } catch (const std::runtime_error& e) {
       throw std::runtime_error("reference metric '" + m.name + "': " + e.what());
     }
-    // Relative against zero is meaningless: fall back to the absolute difference.
-    r.relative = m.relative && r.expected != 0.0;
-    r.error = r.relative ? (r.value - r.expected) / std::abs(r.expected) : r.value - r.expected;
+    r.relative = m.relative;
+    r.error = NAN;
+    if (m.expected) compare(r, r.expected);
     out.push_back(r);
   }
   return out;

@@ -6,6 +6,9 @@
 //   value = "sqrt(last(kinetic_energy) / first(kinetic_energy))"
 //   expected = "exp(-8 * pi^2 * (last(time) - first(time)) / 100)"   # or a number
 //   error = "relative"                                               # or "absolute"
+// Without `expected` the run reports the value alone: a quantity with no analytic answer, which a
+// study compares with one of its points (a fine-resolution run; study file `reference`).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,13 +20,13 @@ namespace isphdem {
 struct ReferenceMetric {
   std::string name;
   DiagnosticsExpression value;
-  DiagnosticsExpression expected;
+  std::optional<DiagnosticsExpression> expected;  // none: the value alone
   bool relative = true;  // (value - expected) / |expected|; absolute: value - expected
 };
 
 struct MetricResult {
   std::string name;
-  double value = 0.0, expected = 0.0, error = 0.0;
+  double value = 0.0, expected = 0.0, error = 0.0;  // expected, error NaN: no expectation
   bool relative = true;
 };
 
@@ -36,6 +39,10 @@ std::vector<ReferenceMetric> parse_reference(const CaseFile& c);
 // CaseError, before the first step, when a metric reads a column the run does not write.
 void check_reference_columns(const std::vector<ReferenceMetric>& metrics,
                              const std::vector<std::string>& columns);
+
+// Sets r's expected value and its error against it (relative, or absolute against 0 or when
+// the metric says so).
+void compare(MetricResult& r, double expected);
 
 // std::runtime_error when a metric cannot be evaluated (no rows, say).
 std::vector<MetricResult> evaluate_reference(const std::vector<ReferenceMetric>& metrics,

@@ -67,6 +67,7 @@ void plot(const Study& study, const fs::path& out, bool quiet, bool has_metrics)
   if (!study.plot_metric.empty()) cmd += " --metric " + quote(study.plot_metric);
   if (!study.plot_series.empty()) cmd += " --series " + quote(study.plot_series);
   if (!study.plot_label.empty()) cmd += " --label " + quote(study.plot_label);
+  if (!study.reference_point.empty()) cmd += " --reference " + quote(study.reference_point);
   std::vector<std::pair<std::string, std::string>> charts;
   if (has_metrics)
     charts.emplace_back("study.png", cmd);
@@ -117,7 +118,8 @@ int study_main(int argc, char** argv, const std::vector<std::string>& known_keys
       std::fflush(stdout);
     }
     fs::create_directories(a.out);
-    const auto outcomes = run_study(study, options);
+    auto outcomes = run_study(study, options);
+    compare_with_reference_point(study, outcomes);
     write_study_table(a.out / "study.csv", study, outcomes);
     bool has_metrics = false;
     for (const auto& o : outcomes) has_metrics = has_metrics || !o.result.metrics.empty();

@@ -28,6 +28,8 @@ const char* study_file_help() {
          "  [[points]]                               # single points, besides the grid\n"
          "  name = \"fine\"                            # optional; else made from the values\n"
          "  set = { \"particles.spacing\" = 0.01 }\n"
+         "  reference = \"fine\"                      # optional: every metric against this\n"
+         "                                           # point's value, not the case's expected\n"
          "  [plot]                                   # study.png: |error| against wall time\n"
          "  metric = \"amplitude\"                     # a [reference] metric of the case\n"
          "  series = \"solver.preconditioner\"         # one line per value of this key\n"
@@ -145,7 +147,7 @@ class StudyLoader {
 
   Study load() {
     for (const auto& [k, v] : root_) {
-      static const std::set<std::string> top{"base", "set", "grid", "points", "plot"};
+      static const std::set<std::string> top{"base", "set", "grid", "points", "plot", "reference"};
       if (!top.count(std::string(k.str())))
         throw CaseError(here(v) + ": unknown key '" + std::string(k.str()) +
                         "' in the study file; did you mean '" +
@@ -169,6 +171,7 @@ class StudyLoader {
                       ": the study has no points: add [grid] with key = [values, ...] or "
                       "[[points]] with set = { key = value }");
     unique_names();
+    reference_point();
     check_extra();
     plot();
     for (const auto& p : study_.points) check_point(p);
@@ -300,6 +303,22 @@ class StudyLoader {
                         "' is a key the study varies; --set would make every point the same "
                         "(change [grid] or [[points]] instead)");
     }
+  }
+
+  void reference_point() {
+    if (!root_.contains("reference")) return;
+    const auto name = root_["reference"].value<std::string>();
+    std::vector<std::string> names;
+    for (const auto& p : study_.points) names.push_back(p.name);
+    if (!name)
+      throw CaseError(here(*root_.get("reference")) +
+                      ": reference must be the name of a point in quotes (points: " + join(names) +
+                      ")");
+    if (std::find(names.begin(), names.end(), *name) == names.end())
+      throw CaseError(here(*root_.get("reference")) + ": reference = \"" + *name +
+                      "\" is not a point of the study; did you mean '" + closest(*name, names) +
+                      "'? (give the point a name = \"...\" in [[points]])");
+    study_.reference_point = *name;
   }
 
   void plot() {

@@ -25,6 +25,9 @@ struct Study {
   std::string plot_series;             // [plot] series: one line per value of this key
   std::string plot_label;              // [plot] label: the key whose value labels each point
   std::vector<std::string> stability;  // [plot] stability = [x, y]: stability.png over two keys
+  // reference = "point": every metric is measured against this point's value (a fine-resolution
+  // run where no analytic answer exists) instead of the case's expected value.
+  std::string reference_point;
 };
 
 // The format, for `isphdem study --help` (docs/study.md has the same with examples).

@@ -27,6 +27,32 @@ std::string number(double x) {
 
 }  // namespace
 
+void compare_with_reference_point(const Study& study, std::vector<PointOutcome>& outcomes) {
+  if (study.reference_point.empty()) return;
+  const PointOutcome* ref = nullptr;
+  for (std::size_t k = 0; k < study.points.size(); ++k)
+    if (study.points[k].name == study.reference_point) ref = &outcomes[k];
+  // A stopped reference is no reference: its metrics are over a run that blew up.
+  const bool usable = ref && ref->status == "finished";
+  if (!usable)
+    std::fprintf(stderr,
+                 "isphdem study: the reference point '%s' did not finish (%s): no errors in "
+                 "study.csv\n",
+                 study.reference_point.c_str(), ref ? ref->status.c_str() : "missing");
+  const std::vector<MetricResult> values =
+      usable ? ref->result.metrics : std::vector<MetricResult>{};
+  for (auto& o : outcomes)
+    for (auto& m : o.result.metrics) {
+      const auto r = std::find_if(values.begin(), values.end(),
+                                  [&](const MetricResult& x) { return x.name == m.name; });
+      if (r == values.end()) {
+        m.expected = m.error = NAN;
+      } else {
+        compare(m, r->value);
+      }
+    }
+}
+
 void write_study_table(const std::filesystem::path& file, const Study& study,
                        const std::vector<PointOutcome>& outcomes) {
   std::vector<std::string> metrics;

@@ -80,6 +80,39 @@ TEST(Study, ErrorFallsWithResolutionAndABadPointIsRecorded) {
   }
 }
 
+// Where no analytic answer exists, a study measures its points against one of them (a
+// fine-resolution run): the coarse Taylor-Green point against the fine one must show the damping
+// the coarse spacing adds (about 1.4% more than at half the spacing, by the analytic errors of
+// the test above), and the fine point itself no error. One time step for both, so that their
+// diagnostics rows (and the amplitude's window) are the same.
+TEST(Study, PointsAreMeasuredAgainstTheReferencePoint) {
+  const auto dir = scratch("study_reference_point");
+  const auto file = write_study(dir,
+                                "reference = \"fine\"\n"
+                                "[set]\n\"time.end\" = 0.5\n\"output.interval\" = 0.5\n"
+                                "\"time.dt\" = 0.005\n"
+                                "[[points]]\nname = \"coarse\"\n"
+                                "set = { \"particles.spacing\" = 0.05 }\n"
+                                "[[points]]\nname = \"fine\"\n"
+                                "set = { \"particles.spacing\" = 0.025 }\n");
+  const Result r = study(file.string() + " --out " + (dir / "out").string() + " -j 2");
+  std::printf("%s", r.output.c_str());
+  ASSERT_EQ(r.exit_code, 0);
+  std::map<std::string, Row> by_name;
+  for (const auto& row : read_csv(dir / "out" / "study.csv")) by_name[row.at("point")] = row;
+  const Row& coarse = by_name.at("coarse");
+  const Row& fine = by_name.at("fine");
+  const double a_coarse = std::stod(coarse.at("amplitude"));
+  const double a_fine = std::stod(fine.at("amplitude"));
+  EXPECT_DOUBLE_EQ(std::stod(coarse.at("amplitude_expected")), a_fine);
+  EXPECT_DOUBLE_EQ(std::stod(fine.at("amplitude_error")), 0.0);
+  const double e = std::stod(coarse.at("amplitude_error"));
+  std::printf("coarse amplitude against the fine point: %+.3f%%\n", 100 * e);
+  EXPECT_NEAR(e, (a_coarse - a_fine) / a_fine, 1e-9);
+  EXPECT_LT(e, -0.005);  // the coarser spacing damps more
+  EXPECT_GT(e, -0.03);
+}
+
 // Writes TEXT as DIR/study.toml, runs it two points at a time and returns the rows of its
 // study.csv by point name (none, and a failure, when the study itself failed).
 std::map<std::string, Row> run_small_study(const fs::path& dir, const std::string& text) {

@@ -2,6 +2,7 @@
 // names and --set values, and a bad file stopping with the key named.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -132,8 +133,7 @@ TEST_F(StudyFile, ReferenceMetricsAreCheckedWhenTheCaseLoads) {
   EXPECT_NE(metric_error("name = \"a\"\nvalue = \"last(x\"\nexpected = 1.0\n")
                 .find("reference.metrics[0].value"),
             std::string::npos);
-  EXPECT_NE(metric_error("name = \"a\"\nvalue = \"last(x)\"\n").find("needs 'expected'"),
-            std::string::npos);
+  EXPECT_EQ(metric_error("name = \"a\"\nvalue = \"last(x)\"\n"), "(no error)");  // value alone
   EXPECT_NE(metric_error("value = \"last(x)\"\nexpected = 1.0\n").find("needs a name"),
             std::string::npos);
   EXPECT_NE(metric_error("name = \"a\"\nvalue = \"last(x)\"\nexpected = 1.0\nerror = \"rel\"\n")
@@ -155,6 +155,22 @@ TEST_F(StudyFile, ReferenceMetricsAreCheckedWhenTheCaseLoads) {
   t.names = {"time", "max_sped"};
   t.columns = {{"time", {1.0}}, {"max_sped", {1.1}}};
   EXPECT_NEAR(evaluate_reference(metrics, t)[0].error, 0.1, 1e-12);
+  // Without an expected value the run reports the value alone; the error is for a study to give.
+  std::ofstream(f) << "[case]\ndimension = 2\n[[reference.metrics]]\nname = \"a\"\n"
+                   << "value = \"2 * last(max_sped)\"\n";
+  const auto alone =
+      evaluate_reference(parse_reference(CaseFile::load(f, {}, case_keys())), t).at(0);
+  EXPECT_NEAR(alone.value, 2.2, 1e-12);
+  EXPECT_TRUE(std::isnan(alone.expected) && std::isnan(alone.error));
+}
+
+TEST_F(StudyFile, ReferencePointMustBeAPointOfTheStudy) {
+  const std::string grid = "[grid]\n\"particles.spacing\" = [0.05, 0.025]\n";
+  EXPECT_EQ(load("reference = \"spacing=0.025\"\n" + grid).reference_point, "spacing=0.025");
+  const std::string m = error("reference = \"spacing=0.0025\"\n" + grid);
+  EXPECT_NE(m.find("\"spacing=0.0025\" is not a point of the study"), std::string::npos) << m;
+  EXPECT_NE(m.find("'spacing=0.025'"), std::string::npos) << m;
+  EXPECT_NE(error("reference = 3\n" + grid).find("the name of a point"), std::string::npos);
 }
 
 }  // namespace
