@@ -104,8 +104,12 @@ std::string describe(const PointOutcome& o) {
     std::snprintf(buf, sizeof buf, " in %s", format_duration(o.result.wall_seconds).c_str());
     s += buf;
     for (const auto& m : o.result.metrics) {
-      std::snprintf(buf, sizeof buf, ", %s %s%.3g%s", m.name.c_str(), m.error >= 0 ? "+" : "",
-                    m.relative ? 100 * m.error : m.error, m.relative ? "%" : "");
+      // A metric with no expected value (a study's reference point gives it one at the end).
+      if (std::isnan(m.error))
+        std::snprintf(buf, sizeof buf, ", %s %.4g", m.name.c_str(), m.value);
+      else
+        std::snprintf(buf, sizeof buf, ", %s %s%.3g%s", m.name.c_str(), m.error >= 0 ? "+" : "",
+                      m.relative ? 100 * m.error : m.error, m.relative ? "%" : "");
       s += buf;
     }
   }
