@@ -46,10 +46,18 @@ void RunReport::finish(bool talk) {
   if (!fs::is_directory(out_, ec)) return;
   const fs::path csv = out_ / "diagnostics.csv";
   if (result_.status != "error" && !metrics_.empty() && fs::exists(csv, ec)) {
+    // One metric that cannot be evaluated (a window after the run's end) leaves the rest.
     try {
-      result_.metrics = evaluate_reference(metrics_, read_diagnostics(csv));
+      const DiagnosticsTable table = read_diagnostics(csv);
+      for (const auto& m : metrics_) {
+        try {
+          result_.metrics.push_back(evaluate_reference({m}, table).at(0));
+        } catch (const std::runtime_error& e) {
+          std::fprintf(stderr, "isphdem run: %s (left out of result.json)\n", e.what());
+        }
+      }
     } catch (const std::runtime_error& e) {
-      std::fprintf(stderr, "isphdem run: %s (left out of result.json)\n", e.what());
+      std::fprintf(stderr, "isphdem run: %s (no metrics in result.json)\n", e.what());
     }
   }
   if (talk)
