@@ -140,16 +140,24 @@ def stability_panel(ax, rows, xkey, ykey, shown):
         ax.plot([x], [y], marker, color=color, markersize=9, linestyle="none",
                 label=None if label in shown else label)
         shown.add(label)
-    # The boundary: at each X, between the largest Y that finished and the smallest that did not.
+    # The boundary: at each X, between the finished Ys and the others, on whichever side of them
+    # the finished ones lie (small steps stable; or, for a density, large values stable).
     xs = sorted({number(r[xkey]) for r in rows})
     bx, by = [], []
+
+    def between(a, b):
+        return math.sqrt(a * b) if a > 0 else 0.5 * b
+
     for x in xs:
         at = [r for r in rows if number(r[xkey]) == x]
         ok = [number(r[ykey]) for r in at if r["status"] == "finished"]
         bad = [number(r[ykey]) for r in at if r["status"] != "finished"]
         if ok and bad and max(ok) < min(bad):
             bx.append(x)
-            by.append(math.sqrt(max(ok) * min(bad)) if max(ok) > 0 else 0.5 * min(bad))
+            by.append(between(max(ok), min(bad)))
+        elif ok and bad and max(bad) < min(ok):
+            bx.append(x)
+            by.append(between(max(bad), min(ok)))
     if bx:
         label = "stability boundary"
         ax.plot(bx, by, "--", color="black", marker="_", markersize=24,
@@ -180,7 +188,14 @@ def stability(args, rows, columns):
         ax.set_title(f"{args.series} = {name}" if args.series else "how each point ended",
                      fontsize=10)
     axes[0][0].set_ylabel(ykey)
-    axes[0][-1].legend(fontsize=8, loc="best")
+    # Each label is drawn once, in whichever panel had it first: gather them all for one legend.
+    handles, labels = [], []
+    for ax in axes[0]:
+        for h, l in zip(*ax.get_legend_handles_labels()):
+            if l not in labels:
+                handles.append(h)
+                labels.append(l)
+    axes[0][-1].legend(handles, labels, fontsize=8, loc="best")
     fig.tight_layout()
     out = args.output or args.table.rsplit(".", 1)[0] + "_stability.png"
     fig.savefig(out, dpi=120)

@@ -1,5 +1,6 @@
 #include "study/study_command.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -72,7 +73,8 @@ void plot(const Study& study, const fs::path& out, bool quiet, bool has_metrics)
   if (has_metrics)
     charts.emplace_back("study.png", cmd);
   else if (!quiet)
-    std::printf("isphdem study: no point reported a [reference] metric: no study.png\n");
+    std::printf(
+        "isphdem study: no point reported an error against an expected value: no study.png\n");
   if (!study.stability.empty()) {
     std::string map = "/usr/bin/python3 " + quote(script.string()) + " " +
                       quote((out / "study.csv").string()) + " -o " +
@@ -122,7 +124,9 @@ int study_main(int argc, char** argv, const std::vector<std::string>& known_keys
     compare_with_reference_point(study, outcomes);
     write_study_table(a.out / "study.csv", study, outcomes);
     bool has_metrics = false;
-    for (const auto& o : outcomes) has_metrics = has_metrics || !o.result.metrics.empty();
+    // study.png draws errors: metrics with no expected value and no reference point have none.
+    for (const auto& o : outcomes)
+      for (const auto& m : o.result.metrics) has_metrics = has_metrics || std::isfinite(m.error);
     plot(study, a.out, a.quiet, has_metrics);
     std::map<std::string, int> count;
     double wall = 0.0;
