@@ -102,9 +102,18 @@ void IsphSolver<Dim>::predict(double dt) {
     // the body acceleration: otherwise the hydrostatic gradient alone reads as a correction of
     // +dt g, the fluid above a rising zone was projected to v_in + dt g (5.25-5.5 mm/s over a
     // 5 mm/s pump at dt = 1e-4 s) while the zone's particles moved at v_in.
+    //
+    // The projection also takes the zone's velocity after the step to be u* - dt c grad p / rho,
+    // while the pump holds it at v_in: so u* carries the whole pressure gradient of the last
+    // step, not only its hydrostatic part g. With g alone the fluid was projected as if the zone
+    // moved at v_in - dt c grad p_dyn / rho: the pressure that drives the flow through the
+    // layer cut the pumped flux by a share that grew with the step (window flux above the
+    // erosion layer 0.4-0.5 v_in at dt = 2e-3 s, about v_in at 1e-4 s).
     if (P.kind[i] == kForcing) {
-      u_star_[i] = zone_of(P.x[i])->velocity_at(time_ + dt) +
-                   dt * porous_.pressure_coefficient(i) * config_.gravity;
+      const Vec<Dim> a =
+          steps_ > 0 ? Vec<Dim>(gradient(nb_, op_, P.p, i) / config_.density) : config_.gravity;
+      u_star_[i] =
+          zone_of(P.x[i])->velocity_at(time_ + dt) + dt * porous_.pressure_coefficient(i) * a;
       continue;
     }
     // Walls take the body acceleration too: their pressure rows impose dp/dn = rho (g - a_w).n,
