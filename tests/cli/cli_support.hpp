@@ -1,5 +1,6 @@
 #pragma once
 // Runs `isphdem run` the way a user does and captures what it prints.
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <array>
@@ -113,6 +114,24 @@ inline std::vector<Row> read_csv(const std::filesystem::path& p) {
     rows.push_back(r);
   }
   return rows;
+}
+
+// Writes TEXT as DIR/study.toml, runs `isphdem study` on it two points at a time into DIR/out and
+// returns the rows of its study.csv by point name (none, and a failure, when the study failed).
+inline std::map<std::string, Row> run_small_study(const std::filesystem::path& dir,
+                                                  const std::string& text) {
+  const std::filesystem::path f = dir / "study.toml";
+  write_file(f, text);
+  const Result r =
+      run_shell(isphdem() + " study " + f.string() + " --out " + (dir / "out").string() + " -j 2");
+  std::printf("%s", r.output.c_str());
+  std::map<std::string, Row> by_name;
+  if (r.exit_code != 0) {
+    ADD_FAILURE() << "the study exited with " << r.exit_code;
+    return by_name;
+  }
+  for (const auto& row : read_csv(dir / "out" / "study.csv")) by_name[row.at("point")] = row;
+  return by_name;
 }
 
 }  // namespace isphdem::cli

@@ -87,19 +87,16 @@ TEST(Study, ErrorFallsWithResolutionAndABadPointIsRecorded) {
 // diagnostics rows (and the amplitude's window) are the same.
 TEST(Study, PointsAreMeasuredAgainstTheReferencePoint) {
   const auto dir = scratch("study_reference_point");
-  const auto file = write_study(dir,
-                                "reference = \"fine\"\n"
-                                "[set]\n\"time.end\" = 0.5\n\"output.interval\" = 0.5\n"
-                                "\"time.dt\" = 0.005\n"
-                                "[[points]]\nname = \"coarse\"\n"
-                                "set = { \"particles.spacing\" = 0.05 }\n"
-                                "[[points]]\nname = \"fine\"\n"
-                                "set = { \"particles.spacing\" = 0.025 }\n");
-  const Result r = study(file.string() + " --out " + (dir / "out").string() + " -j 2");
-  std::printf("%s", r.output.c_str());
-  ASSERT_EQ(r.exit_code, 0);
-  std::map<std::string, Row> by_name;
-  for (const auto& row : read_csv(dir / "out" / "study.csv")) by_name[row.at("point")] = row;
+  auto by_name = run_small_study(dir, "base = \"" + example("taylor_green_2d") +
+                                          "\"\n"
+                                          "reference = \"fine\"\n"
+                                          "[set]\n\"time.end\" = 0.5\n\"output.interval\" = 0.5\n"
+                                          "\"time.dt\" = 0.005\n"
+                                          "[[points]]\nname = \"coarse\"\n"
+                                          "set = { \"particles.spacing\" = 0.05 }\n"
+                                          "[[points]]\nname = \"fine\"\n"
+                                          "set = { \"particles.spacing\" = 0.025 }\n");
+  ASSERT_EQ(by_name.size(), 2u);
   const Row& coarse = by_name.at("coarse");
   const Row& fine = by_name.at("fine");
   const double a_coarse = std::stod(coarse.at("amplitude"));
@@ -111,22 +108,6 @@ TEST(Study, PointsAreMeasuredAgainstTheReferencePoint) {
   EXPECT_NEAR(e, (a_coarse - a_fine) / a_fine, 1e-9);
   EXPECT_LT(e, -0.005);  // the coarser spacing damps more
   EXPECT_GT(e, -0.03);
-}
-
-// Writes TEXT as DIR/study.toml, runs it two points at a time and returns the rows of its
-// study.csv by point name (none, and a failure, when the study itself failed).
-std::map<std::string, Row> run_small_study(const fs::path& dir, const std::string& text) {
-  const fs::path f = dir / "study.toml";
-  write_file(f, text);
-  const Result r = study(f.string() + " --out " + (dir / "out").string() + " -j 2");
-  std::printf("%s", r.output.c_str());
-  std::map<std::string, Row> by_name;
-  if (r.exit_code != 0) {
-    ADD_FAILURE() << "the study exited with " << r.exit_code;
-    return by_name;
-  }
-  for (const auto& row : read_csv(dir / "out" / "study.csv")) by_name[row.at("point")] = row;
-  return by_name;
 }
 
 // The reduced settling-grain study (examples/studies/settling_grain.toml at two of its spacings):
