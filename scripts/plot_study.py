@@ -152,10 +152,12 @@ def stability_panel(ax, rows, xkey, ykey, shown):
         at = [r for r in rows if number(r[xkey]) == x]
         ok = [number(r[ykey]) for r in at if r["status"] == "finished"]
         bad = [number(r[ykey]) for r in at if r["status"] != "finished"]
-        if ok and bad and max(ok) < min(bad):
+        if not (ok and bad):
+            continue
+        if max(ok) < min(bad):
             bx.append(x)
             by.append(between(max(ok), min(bad)))
-        elif ok and bad and max(bad) < min(ok):
+        elif max(bad) < min(ok):
             bx.append(x)
             by.append(between(max(bad), min(ok)))
     if bx:

@@ -51,7 +51,7 @@ void RunReport::finish(bool talk) {
       const DiagnosticsTable table = read_diagnostics(csv);
       for (const auto& m : metrics_) {
         try {
-          result_.metrics.push_back(evaluate_reference({m}, table).at(0));
+          result_.metrics.push_back(evaluate_metric(m, table));
         } catch (const std::runtime_error& e) {
           std::fprintf(stderr, "isphdem run: %s (left out of result.json)\n", e.what());
         }

@@ -71,12 +71,16 @@ std::vector<ReferenceMetric> parse_reference(const CaseFile& c) {
 
 void check_reference_columns(const std::vector<ReferenceMetric>& metrics,
                              const std::vector<std::string>& columns) {
-  for (const auto& m : metrics)
-    for (const auto* e : {&m.value, m.expected ? &*m.expected : &m.value})
-      for (const auto& col : e->columns())
-        if (std::find(columns.begin(), columns.end(), col) == columns.end())
-          throw CaseError("reference metric '" + m.name + "': this run writes no column '" + col +
-                          "' to diagnostics.csv; the closest is '" + closest(col, columns) + "'");
+  auto check = [&](const ReferenceMetric& m, const DiagnosticsExpression& e) {
+    for (const auto& col : e.columns())
+      if (std::find(columns.begin(), columns.end(), col) == columns.end())
+        throw CaseError("reference metric '" + m.name + "': this run writes no column '" + col +
+                        "' to diagnostics.csv; the closest is '" + closest(col, columns) + "'");
+  };
+  for (const auto& m : metrics) {
+    check(m, m.value);
+    if (m.expected) check(m, *m.expected);
+  }
 }
 
 void compare(MetricResult& r, double expected) {
@@ -86,24 +90,18 @@ void compare(MetricResult& r, double expected) {
   r.error = r.relative ? (r.value - expected) / std::abs(expected) : r.value - expected;
 }
 
-std::vector<MetricResult> evaluate_reference(const std::vector<ReferenceMetric>& metrics,
-                                             const DiagnosticsTable& table) {
-  std::vector<MetricResult> out;
-  for (const auto& m : metrics) {
-    MetricResult r;
-    r.name = m.name;
-    try {
-      r.value = m.value.evaluate(table);
-      r.expected = m.expected ? m.expected->evaluate(table) : NAN;
-    } catch (const std::runtime_error& e) {
-      throw std::runtime_error("reference metric '" + m.name + "': " + e.what());
-    }
-    r.relative = m.relative;
-    r.error = NAN;
-    if (m.expected) compare(r, r.expected);
-    out.push_back(r);
+MetricResult evaluate_metric(const ReferenceMetric& m, const DiagnosticsTable& table) {
+  MetricResult r;
+  r.name = m.name;
+  r.relative = m.relative;
+  r.expected = r.error = NAN;
+  try {
+    r.value = m.value.evaluate(table);
+    if (m.expected) compare(r, m.expected->evaluate(table));
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error("reference metric '" + m.name + "': " + e.what());
   }
-  return out;
+  return r;
 }
 
 }  // namespace isphdem

@@ -44,8 +44,7 @@ void check_reference_columns(const std::vector<ReferenceMetric>& metrics,
 // the metric says so).
 void compare(MetricResult& r, double expected);
 
-// std::runtime_error when a metric cannot be evaluated (no rows, say).
-std::vector<MetricResult> evaluate_reference(const std::vector<ReferenceMetric>& metrics,
-                                             const DiagnosticsTable& table);
+// std::runtime_error naming the metric when it cannot be evaluated (no rows, say).
+MetricResult evaluate_metric(const ReferenceMetric& m, const DiagnosticsTable& table);
 
 }  // namespace isphdem

@@ -154,12 +154,11 @@ TEST_F(StudyFile, ReferenceMetricsAreCheckedWhenTheCaseLoads) {
   DiagnosticsTable t;
   t.names = {"time", "max_sped"};
   t.columns = {{"time", {1.0}}, {"max_sped", {1.1}}};
-  EXPECT_NEAR(evaluate_reference(metrics, t)[0].error, 0.1, 1e-12);
+  EXPECT_NEAR(evaluate_metric(metrics.at(0), t).error, 0.1, 1e-12);
   // Without an expected value the run reports the value alone; the error is for a study to give.
   std::ofstream(f) << "[case]\ndimension = 2\n[[reference.metrics]]\nname = \"a\"\n"
                    << "value = \"2 * last(max_sped)\"\n";
-  const auto alone =
-      evaluate_reference(parse_reference(CaseFile::load(f, {}, case_keys())), t).at(0);
+  const auto alone = evaluate_metric(parse_reference(CaseFile::load(f, {}, case_keys())).at(0), t);
   EXPECT_NEAR(alone.value, 2.2, 1e-12);
   EXPECT_TRUE(std::isnan(alone.expected) && std::isnan(alone.error));
 }
