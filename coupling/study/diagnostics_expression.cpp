@@ -56,7 +56,8 @@ std::string known_names() {
 
 class Parser {
  public:
-  explicit Parser(const std::string& text) : s_(text) {}
+  Parser(const std::string& text, const std::map<std::string, double>& constants)
+      : s_(text), constants_(constants) {}
 
   Node parse(std::vector<std::string>& columns) {
     columns_ = &columns;
@@ -153,13 +154,15 @@ class Parser {
     const std::string name = identifier();
     if (name.empty()) fail("a number, a function or '('");
     if (!eat('(')) {
-      if (name == "pi") {
+      const auto k = constants_.find(name);
+      if (name == "pi" || k != constants_.end()) {
         Node n;
-        n.value = M_PI;
+        n.value = name == "pi" ? M_PI : k->second;
         return n;
       }
       i_ = at;
-      fail("a function call such as last(" + name + ") (a column is read through a reduction)");
+      fail("a function call such as last(" + name +
+           ") (a column is read through a reduction), or a constant of [reference.constants]");
     }
     Node n;
     n.name = name;
@@ -171,8 +174,8 @@ class Parser {
     const std::size_t after_paren = i_;
     std::string column = identifier();
     skip();
-    const bool column_first =
-        !column.empty() && column != "pi" && (i_ == s_.size() || s_[i_] == ')' || s_[i_] == ',');
+    const bool column_first = !column.empty() && column != "pi" && !constants_.count(column) &&
+                              (i_ == s_.size() || s_[i_] == ')' || s_[i_] == ',');
     if (r != reductions().end() && column_first) {
       n.kind = Node::kReduction;
       n.column = column;
@@ -202,6 +205,7 @@ class Parser {
   }
 
   const std::string& s_;
+  const std::map<std::string, double>& constants_;
   std::size_t i_ = 0;
   std::vector<std::string>* columns_ = nullptr;
 };
@@ -287,8 +291,10 @@ double evaluate_node(const Node& n, const DiagnosticsTable& t) {
 
 }  // namespace
 
-DiagnosticsExpression::DiagnosticsExpression(std::string text) : text_(std::move(text)) {
-  root_ = Parser(text_).parse(columns_);
+DiagnosticsExpression::DiagnosticsExpression(std::string text,
+                                             const std::map<std::string, double>& constants)
+    : text_(std::move(text)) {
+  root_ = Parser(text_, constants).parse(columns_);
   std::sort(columns_.begin(), columns_.end());
   columns_.erase(std::unique(columns_.begin(), columns_.end()), columns_.end());
 }

@@ -8,6 +8,9 @@
 // time column), mean_after(col, t), max_after(col, t), min_after(col, t); and the analytic
 // references of reference_formulas.hpp: stokes_velocity(d, rho_p, rho_f, nu, g),
 // schiller_naumann_velocity(d, rho_p, rho_f, nu, g), ergun_gradient(eps, d, nu, rho, U).
+// Bare names other than pi are the named constants given to the constructor (a case's
+// [reference.constants]: a grain diameter that a study varies, say).
+#include <map>
 #include <string>
 #include <vector>
 
@@ -19,7 +22,8 @@ class DiagnosticsExpression {
  public:
   // Parses `text`. std::invalid_argument says what was expected where ("at 'foo(' (column 4):
   // unknown function 'foo'; known: ...").
-  explicit DiagnosticsExpression(std::string text);
+  explicit DiagnosticsExpression(std::string text,
+                                 const std::map<std::string, double>& constants = {});
 
   const std::string& text() const { return text_; }
   // The diagnostics.csv columns the formula reads (time included where at() or *_after need it).

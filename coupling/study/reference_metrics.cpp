@@ -1,7 +1,9 @@
 #include "study/reference_metrics.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -9,13 +11,15 @@ namespace isphdem {
 
 std::vector<std::string> reference_keys() {
   return {"reference.metrics.name", "reference.metrics.value", "reference.metrics.expected",
-          "reference.metrics.error"};
+          "reference.metrics.error", "reference.constants.*"};
 }
 
 namespace {
 
+using Constants = std::map<std::string, double>;
+
 DiagnosticsExpression formula(const toml::table& t, const std::string& key,
-                              const std::string& context) {
+                              const std::string& context, const Constants& constants) {
   const auto* node = t.get(key);
   if (!node)
     throw CaseError(context + " needs '" + key + "' (a formula over diagnostics.csv columns" +
@@ -33,10 +37,42 @@ DiagnosticsExpression formula(const toml::table& t, const std::string& key,
                     (key == "expected" ? std::string(" or a number") : std::string()));
   }
   try {
-    return DiagnosticsExpression(text);
+    return DiagnosticsExpression(text, constants);
   } catch (const std::invalid_argument& e) {
     throw CaseError(context + "." + key + " = \"" + text + "\": " + e.what());
   }
+}
+
+// [reference.constants]: name = number, or name = "case.key" for that key's number, so that a
+// formula follows a value a study varies (a grain diameter) without repeating it.
+Constants parse_constants(const CaseFile& c) {
+  Constants constants;
+  if (!c.has("reference.constants")) return constants;
+  const toml::table* table = c.table().at_path("reference.constants").as_table();
+  if (!table)
+    throw CaseError("reference.constants must be a table: [reference.constants] with name = value");
+  for (const auto& [k, node] : *table) {
+    const std::string name(k.str()), context = "reference.constants." + std::string(k.str());
+    bool word = !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0]));
+    for (char ch : name) word = word && (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_');
+    if (!word || name == "pi")
+      throw CaseError(context +
+                      ": a constant's name is a word of letters, digits and '_' (not pi)");
+    if (const auto x = node.value<double>(); x && !node.is_string()) {
+      constants[name] = *x;
+    } else if (const auto key = node.value<std::string>()) {
+      if (!c.has(*key))
+        throw CaseError(context + " = \"" + *key + "\": the case has no key '" + *key + "'");
+      try {
+        constants[name] = c.number(*key);
+      } catch (const CaseError& e) {
+        throw CaseError(context + " = \"" + *key + "\": " + e.what());
+      }
+    } else {
+      throw CaseError(context + " must be a number or a case key in quotes (\"fluid.viscosity\")");
+    }
+  }
+  return constants;
 }
 
 }  // namespace
@@ -45,6 +81,7 @@ std::vector<ReferenceMetric> parse_reference(const CaseFile& c) {
   std::vector<ReferenceMetric> metrics;
   if (!c.has("reference")) return metrics;
   std::set<std::string> names;
+  const Constants constants = parse_constants(c);
   const auto tables = c.tables("reference.metrics");
   if (tables.empty())
     throw CaseError(
@@ -63,8 +100,9 @@ std::vector<ReferenceMetric> parse_reference(const CaseFile& c) {
     if (error != "relative" && error != "absolute")
       throw CaseError(context + ".error = \"" + error + "\": use \"relative\" or \"absolute\"");
     std::optional<DiagnosticsExpression> expected;
-    if (t.contains("expected")) expected = formula(t, "expected", context);
-    metrics.push_back({*name, formula(t, "value", context), expected, error == "relative"});
+    if (t.contains("expected")) expected = formula(t, "expected", context, constants);
+    metrics.push_back(
+        {*name, formula(t, "value", context, constants), expected, error == "relative"});
   }
   return metrics;
 }

@@ -34,6 +34,7 @@ const char* study_file_help() {
          "  metric = \"amplitude\"                     # a [reference] metric of the case\n"
          "  series = \"solver.preconditioner\"         # one line per value of this key\n"
          "  label = \"particles.spacing\"              # the value written beside each point\n"
+         "                                           # (\"point\": the point's name)\n"
          "  stability = [\"particles.spacing\", \"time.cfl\"]  # stability.png: how each point\n"
          "                                           # ended over two varied keys (by its\n"
          "                                           # cause: cfl, nan, grain_overlap, ...),\n"
@@ -354,7 +355,7 @@ class StudyLoader {
     std::vector<const std::string*> keys{&study_.plot_series, &study_.plot_label};
     for (const auto& k : study_.stability) keys.push_back(&k);
     for (const auto* k : keys)
-      if (!k->empty() &&
+      if (!k->empty() && !(k == &study_.plot_label && *k == "point") &&
           std::find(study_.varied.begin(), study_.varied.end(), *k) == study_.varied.end())
         throw CaseError("[plot] '" + *k +
                         "' is not a key the study varies (it varies: " + join(study_.varied) + ")");

@@ -26,6 +26,13 @@ UnresolvedCoupling<Dim>::UnresolvedCoupling(const UnresolvedSettings& settings,
 template <int Dim>
 void UnresolvedCoupling<Dim>::initialize(const DemState& dem, isph::IsphSolver<Dim>& solver) {
   const auto& d = solver.domain();
+  for (int k = 0; k < Dim; ++k)
+    if (d.periodic[k] && map_.support() > d.hi[k] - d.lo[k])
+      throw std::runtime_error(
+          "the porosity kernel reaches " + std::to_string(map_.support()) +
+          " m, farther than the periodic box is long on axis " + std::to_string(k) + " (" +
+          std::to_string(d.hi[k] - d.lo[k]) +
+          " m): lower unresolved.porosity_smoothing_length or make the box longer");
   for (const auto& a : dem.atoms) {
     if (!maps(a)) continue;
     for (int k = 0; k < Dim; ++k)
@@ -61,8 +68,9 @@ void UnresolvedCoupling<Dim>::before_fluid_step(const DemState& dem,
       rows.push_back(i);
     }
   // The grain grid knows no periodic images: grains within the porosity support of a periodic
-  // face are mirrored across it. Images carry the tag of their grain, so their share of the
-  // drag goes to the real grain.
+  // face are mirrored across it (across both faces when the support exceeds half the box: a
+  // 4 mm support in an 8 mm box gave the bed's mean porosity as 0.60 for 0.48 with one image).
+  // Images carry the tag of their grain, so their share of the drag goes to the real grain.
   std::vector<Grain<Dim>> with_images = grains_;
   owner_.resize(grains_.size());
   for (std::size_t g = 0; g < owner_.size(); ++g) owner_[g] = g;
@@ -73,13 +81,10 @@ void UnresolvedCoupling<Dim>::before_fluid_step(const DemState& dem,
     const double L = dom.hi[k] - dom.lo[k];
     const std::size_t n = with_images.size();
     for (std::size_t g = 0; g < n; ++g) {
-      Grain<Dim> im = with_images[g];
-      if (im.x[k] - dom.lo[k] < reach) {
-        im.x[k] += L;
-        with_images.push_back(im);
-        owner_.push_back(owner_[g]);
-      } else if (dom.hi[k] - im.x[k] < reach) {
-        im.x[k] -= L;
+      for (const double shift : {L, -L}) {
+        Grain<Dim> im = with_images[g];
+        if ((shift > 0 ? im.x[k] - dom.lo[k] : dom.hi[k] - im.x[k]) >= reach) continue;
+        im.x[k] += shift;
         with_images.push_back(im);
         owner_.push_back(owner_[g]);
       }

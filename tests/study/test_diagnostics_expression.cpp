@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 
 #include "study/diagnostics_expression.hpp"
 #include "study/diagnostics_table.hpp"
@@ -90,6 +91,17 @@ TEST(DiagnosticsExpression, SyntaxErrorsSayWhatWasExpectedWhere) {
   EXPECT_NE(message("at(speed)").find("',' and a time"), std::string::npos);
   EXPECT_NE(message("sqrt(1, 2)").find("takes 1 argument"), std::string::npos);
   EXPECT_NE(message("2 3").find("column 3"), std::string::npos);
+}
+
+TEST(DiagnosticsExpression, NamedConstantsAreNumbers) {
+  const std::map<std::string, double> c{{"d", 0.002}, {"cells", 4.0}};
+  EXPECT_DOUBLE_EQ(DiagnosticsExpression("last(speed) / (cells * d)^2", c).evaluate(table()),
+                   6.0 / 64e-6);
+  // A constant is a number, not a column: min(d, 1) is the function of two numbers.
+  EXPECT_DOUBLE_EQ(DiagnosticsExpression("min(d, 1)", c).evaluate(table()), 0.002);
+  EXPECT_TRUE(DiagnosticsExpression("2 * d", c).columns().empty());
+  // Without the constant the name is a column read without a reduction.
+  EXPECT_THROW(DiagnosticsExpression("2 * d"), std::invalid_argument);
 }
 
 TEST(DiagnosticsExpression, EvaluationErrorsNameTheColumn) {

@@ -163,6 +163,38 @@ TEST_F(StudyFile, ReferenceMetricsAreCheckedWhenTheCaseLoads) {
   EXPECT_TRUE(std::isnan(alone.expected) && std::isnan(alone.error));
 }
 
+// [reference.constants]: numbers, or a case key's number, so a formula follows a varied key.
+TEST_F(StudyFile, ReferenceConstantsFollowTheCase) {
+  const fs::path f = dir_ / "case.toml";
+  auto load_case = [&](const std::string& constants, const std::vector<std::string>& set = {}) {
+    std::ofstream(f) << "[case]\ndimension = 2\n[fluid]\nviscosity = 1e-6\n"
+                     << "[reference.constants]\n"
+                     << constants << "[[reference.metrics]]\nname = \"a\"\n"
+                     << "value = \"last(x) * nu / k\"\nexpected = 1.0\n";
+    return parse_reference(CaseFile::load(f, set, case_keys()));
+  };
+  DiagnosticsTable t;
+  t.names = {"time", "x"};
+  t.columns = {{"time", {1.0}}, {"x", {3.0}}};
+  const auto m = load_case("nu = \"fluid.viscosity\"\nk = 2\n", {"fluid.viscosity=4e-6"});
+  EXPECT_DOUBLE_EQ(evaluate_metric(m.at(0), t).value, 3.0 * 4e-6 / 2);
+  auto message = [&](const std::string& constants) {
+    try {
+      load_case(constants);
+    } catch (const CaseError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_NE(message("nu = \"fluid.viscosty\"\nk = 2\n").find("no key 'fluid.viscosty'"),
+            std::string::npos);
+  EXPECT_NE(message("nu = true\nk = 2\n").find("reference.constants.nu must be a number"),
+            std::string::npos);
+  EXPECT_NE(message("nu = 1\npi = 3\nk = 2\n").find("not pi"), std::string::npos);
+  // A formula's unknown name says where constants come from.
+  EXPECT_NE(message("nu = 1\n").find("[reference.constants]"), std::string::npos);
+}
+
 TEST_F(StudyFile, ReferencePointMustBeAPointOfTheStudy) {
   const std::string grid = "[grid]\n\"particles.spacing\" = [0.05, 0.025]\n";
   EXPECT_EQ(load("reference = \"spacing=0.025\"\n" + grid).reference_point, "spacing=0.025");

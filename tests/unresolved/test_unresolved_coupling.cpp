@@ -103,6 +103,50 @@ void check_momentum(unsigned seed) {
 TEST(UnresolvedCoupling, MomentumIsConservedIn2D) { check_momentum<2>(3); }
 TEST(UnresolvedCoupling, MomentumIsConservedIn3D) { check_momentum<3>(5); }
 
+// A porosity kernel wider than half a periodic box needs each grain's images on both sides: a
+// simple cubic lattice of touching spheres (2 per axis in an 8 mm box) seen through a kernel
+// reaching the whole box has the lattice's porosity 1 - pi/6 everywhere (with one image per
+// grain the mean was 0.60). A kernel reaching farther than the box is refused.
+TEST(UnresolvedCoupling, WideKernelSeesImagesOnBothSidesOfAPeriodicBox) {
+  const double dx = 1e-3, L = 8e-3, d = 4e-3;
+  isph::Domain<3> domain;
+  domain.hi.setConstant(L);
+  domain.periodic.fill(true);
+  isph::Particles<3> P;
+  P.spacing = dx;
+  P.volume = dx * dx * dx;
+  isph::fill_box<3>(P, domain.lo, domain.hi, dx, isph::kFluid);
+  isph::IsphConfig<3> cfg;
+  cfg.free_surface = false;
+  isph::IsphSolver<3> solver(cfg, domain, std::move(P));
+  DemState dem;
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      for (int k = 0; k < 2; ++k) {
+        DemAtom a;
+        a.tag = 1 + i + 2 * j + 4 * k;
+        a.x = {(i + 0.5) * d, (j + 0.5) * d, (k + 0.5) * d};
+        a.radius = 0.5 * d;
+        dem.atoms.push_back(a);
+      }
+  auto stage_with = [](double smoothing) {
+    UnresolvedSettings s;
+    s.map.smoothing_length = smoothing;
+    return UnresolvedCoupling<3>(s, std::make_shared<SeedResistance>(SeedResistanceParameters{}));
+  };
+  auto stage = stage_with(0.5 * L);  // support 2 x 4 mm: the whole box
+  stage.initialize(dem, solver);
+  stage.before_fluid_step(dem, solver);
+  const auto& eps = solver.particles().porosity;
+  const double lo = *std::min_element(eps.begin(), eps.end());
+  const double hi = *std::max_element(eps.begin(), eps.end());
+  std::printf("porosity %.4f ... %.4f against 1 - pi/6 = %.4f\n", lo, hi, 1 - M_PI / 6);
+  EXPECT_NEAR(lo, 1 - M_PI / 6, 0.02);
+  EXPECT_NEAR(hi, 1 - M_PI / 6, 0.02);
+  auto too_wide = stage_with(0.6 * L);
+  EXPECT_THROW(too_wide.initialize(dem, solver), std::runtime_error);
+}
+
 // With no grains in range, the stage leaves the fluid exactly clear (eps = 1, K = 0).
 TEST(UnresolvedCoupling, NoGrainsLeaveTheFluidClear) {
   isph::Domain<2> domain;
