@@ -34,7 +34,9 @@ functions() {
          {5,
           [](const auto& a) { return schiller_naumann_velocity(a[0], a[1], a[2], a[3], a[4]); }}},
         {"ergun_gradient",
-         {5, [](const auto& a) { return ergun_gradient(a[0], a[1], a[2], a[3], a[4]); }}}};
+         {5, [](const auto& a) { return ergun_gradient(a[0], a[1], a[2], a[3], a[4]); }}},
+        {"cubic_array_drag_factor",
+         {1, [](const auto& a) { return cubic_array_drag_factor(a[0]); }}}};
   return f;
 }
 

@@ -7,7 +7,8 @@
 // reductions of one column: first last min max mean (all rows), at(col, t) (interpolated in the
 // time column), mean_after(col, t), max_after(col, t), min_after(col, t); and the analytic
 // references of reference_formulas.hpp: stokes_velocity(d, rho_p, rho_f, nu, g),
-// schiller_naumann_velocity(d, rho_p, rho_f, nu, g), ergun_gradient(eps, d, nu, rho, U).
+// schiller_naumann_velocity(d, rho_p, rho_f, nu, g), ergun_gradient(eps, d, nu, rho, U),
+// cubic_array_drag_factor(phi).
 // Bare names other than pi are the named constants given to the constructor (a case's
 // [reference.constants]: a grain diameter that a study varies, say).
 #include <map>

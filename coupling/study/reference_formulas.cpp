@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace isphdem {
 
@@ -34,6 +35,15 @@ double ergun_gradient(double eps, double d, double nu, double rho, double u) {
   const double e3 = eps * eps * eps;
   return 150.0 * rho * nu * (1 - eps) * (1 - eps) * u / (e3 * d * d) +
          1.75 * rho * (1 - eps) * u * u / (e3 * d);
+}
+
+double cubic_array_drag_factor(double phi) {
+  if (!(phi >= 0.0 && phi <= 0.125))
+    throw std::runtime_error("cubic_array_drag_factor(phi) holds for 0 <= phi <= 0.125 (got " +
+                             std::to_string(phi) + ")");
+  const double c = std::cbrt(phi);
+  return 1.0 / (1.0 - 1.7601 * c + phi - 1.5593 * phi * phi + 3.9799 * phi * phi * c -
+                3.0734 * phi * phi * c * c);
 }
 
 }  // namespace isphdem

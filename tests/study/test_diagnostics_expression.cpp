@@ -68,6 +68,12 @@ TEST(ReferenceFormulas, TerminalVelocitiesAndErgun) {
   // 1.75*1000*0.6*1e-6/(0.064*1e-3) = 843.75 + 16.40625 Pa/m.
   EXPECT_NEAR(eval("ergun_gradient(0.4, 1e-3, 1e-6, 1000, 1e-3)"), 860.15625, 1e-9);
   EXPECT_THROW(eval("schiller_naumann_velocity(1e-3, 900, 1000, 1e-6, 9.81)"), std::runtime_error);
+  // Simple cubic arrays against Zick & Homsy (1982, Table 2): K = 2.008 at phi = 0.027, 2.810
+  // at 0.064; a lone sphere (phi -> 0) has K = 1.
+  EXPECT_NEAR(eval("cubic_array_drag_factor(0.027)"), 2.008, 0.01);
+  EXPECT_NEAR(eval("cubic_array_drag_factor(0.064)"), 2.810, 0.03);
+  EXPECT_DOUBLE_EQ(eval("cubic_array_drag_factor(0)"), 1.0);
+  EXPECT_THROW(eval("cubic_array_drag_factor(0.2)"), std::runtime_error);
 }
 
 TEST(DiagnosticsExpression, ListsTheColumnsItReads) {
