@@ -7,25 +7,32 @@
 
 #include <cmath>
 #include <map>
+#include <sstream>
 
 #include "../cli/cli_support.hpp"
 
 namespace isphdem::cli {
 namespace {
 
+std::string num(double x) {
+  std::ostringstream o;
+  o.precision(12);
+  o << x;
+  return o.str();
+}
+
 std::string point(const std::string& name, const std::string& model, double dx, double dt,
                   double box) {
-  const std::string b = std::to_string(box),
-                    set_box = box > 0 ? ", \"dem.variables.box\" = " + b + ", \"domain.max\" = [" +
-                                            b + ", " + b + ", " + b +
-                                            "], \"fluid.blocks\" = [{ min = "
-                                            "[0.0, 0.0, 0.0], max = [" +
-                                            b + ", " + b + ", " + b + "] }]"
-                                      : "";
+  const std::string b = num(box), set_box = box > 0 ? ", \"dem.variables.box\" = " + b +
+                                                          ", \"domain.max\" = [" + b + ", " + b +
+                                                          ", " + b +
+                                                          "], \"fluid.blocks\" = [{ min = "
+                                                          "[0.0, 0.0, 0.0], max = [" +
+                                                          b + ", " + b + ", " + b + "] }]"
+                                                    : "";
   return "[[points]]\nname = \"" + name + "\"\nset = { \"coupling.model\" = \"" + model +
-         "\", \"particles.spacing\" = " + std::to_string(dx) +
-         ", \"time.dt\" = " + std::to_string(dt) +
-         ", \"dem.variables.dem_dt\" = " + std::to_string(dt / 10) + set_box + " }\n";
+         "\", \"particles.spacing\" = " + num(dx) + ", \"time.dt\" = " + num(dt) +
+         ", \"dem.variables.dem_dt\" = " + num(dt / 10) + set_box + " }\n";
 }
 
 TEST(SettlingSphere, ResolvedErrorFallsWithDOverDxAndUnresolvedGrowsWithIt) {
