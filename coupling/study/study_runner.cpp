@@ -4,6 +4,7 @@
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
+#include <toml++/toml.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -19,6 +20,7 @@
 #include <thread>
 
 #include "io/progress_line.hpp"
+#include "study/diagnostics_table.hpp"
 
 namespace isphdem {
 
@@ -117,6 +119,38 @@ std::string describe(const PointOutcome& o) {
   return s;
 }
 
+// How much longer a running point needs, from how far its diagnostics.csv has come against the
+// time.end of its case_used.toml; NaN while it has written no row yet (or is not a timed run).
+double remaining_seconds(const fs::path& dir) {
+  try {
+    const auto t = read_diagnostics(dir / "diagnostics.csv");
+    const toml::table used = toml::parse_file((dir / "case_used.toml").string());
+    const double t_end = used["time"]["end"].value<double>().value_or(NAN);
+    if (t.rows() == 0 || !t.has("time") || !t.has("wall_seconds")) return NAN;
+    const double now = t.columns.at("time").back(), wall = t.columns.at("wall_seconds").back();
+    if (!(now > 0.0) || !(wall > 0.0) || !(t_end > now)) return NAN;
+    return wall * (t_end - now) / now;
+  } catch (const std::exception&) {
+    return NAN;
+  }
+}
+
+// The rest of the study: the running points from their own progress (or, before their first
+// row, the mean point), the queued ones at the mean point, over the jobs; never less than the
+// longest running point still needs. Points of one study can differ in cost a hundredfold, so
+// the mean alone said seconds where a fine point had minutes to go.
+double eta_seconds(const std::vector<std::pair<fs::path, double>>& running, std::size_t queued,
+                   double mean_point, int jobs) {
+  double work = mean_point * double(queued), longest = 0.0;
+  for (const auto& [dir, started] : running) {
+    double rest = remaining_seconds(dir);
+    if (std::isnan(rest)) rest = std::max(0.0, mean_point - (now_seconds() - started));
+    work += rest;
+    longest = std::max(longest, rest);
+  }
+  return std::max(longest, work / double(std::max(1, jobs)));
+}
+
 }  // namespace
 
 std::vector<PointOutcome> run_study(const Study& study, const StudyRunOptions& o) {
@@ -178,9 +212,13 @@ std::vector<PointOutcome> run_study(const Study& study, const StudyRunOptions& o
     std::string eta;
     const std::size_t left = pending.size() - next + running.size();
     if (left > 0) {
-      const double per_point = run_wall / double(run_count);
+      std::vector<std::pair<fs::path, double>> busy;
+      for (const auto& [p, point] : running)
+        busy.emplace_back(o.out / study.points[point.first].name, point.second);
       eta = " (" + std::to_string(running.size()) + " running, ETA " +
-            format_duration(per_point * double(left) / double(std::max(1, o.jobs))) + ")";
+            format_duration(
+                eta_seconds(busy, pending.size() - next, run_wall / double(run_count), o.jobs)) +
+            ")";
     }
     say(k, describe(outcomes[k]) + eta);
   }
