@@ -176,8 +176,11 @@ class Parser {
     const std::size_t after_paren = i_;
     std::string column = identifier();
     skip();
-    const bool column_first = !column.empty() && column != "pi" && !constants_.count(column) &&
-                              (i_ == s_.size() || s_[i_] == ')' || s_[i_] == ',');
+    // An identifier first is the column of a reduction, unless a ',' follows and the reduction
+    // takes no further argument: min(d, 1) is then the function of two numbers.
+    const bool column_first = !column.empty() && column != "pi" &&
+                              (i_ == s_.size() || s_[i_] == ')' ||
+                               (s_[i_] == ',' && r != reductions().end() && r->second > 0));
     if (r != reductions().end() && column_first) {
       n.kind = Node::kReduction;
       n.column = column;

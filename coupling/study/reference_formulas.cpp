@@ -42,8 +42,8 @@ double cubic_array_drag_factor(double phi) {
     throw std::runtime_error("cubic_array_drag_factor(phi) holds for 0 <= phi <= 0.125 (got " +
                              std::to_string(phi) + ")");
   const double c = std::cbrt(phi);
-  return 1.0 / (1.0 - 1.7601 * c + phi - 1.5593 * phi * phi + 3.9799 * phi * phi * c -
-                3.0734 * phi * phi * c * c);
+  const double c8 = phi * phi * c * c;  // phi^(8/3)
+  return 1.0 / (1.0 - 1.7601 * c + phi - 1.5593 * phi * phi + 3.9799 * c8 - 3.0734 * c8 * c * c);
 }
 
 }  // namespace isphdem

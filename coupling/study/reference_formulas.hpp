@@ -20,8 +20,8 @@ double ergun_gradient(double eps, double d, double nu, double rho, double u);
 // Stokes drag on each sphere of a simple cubic array at solid fraction phi, as a multiple K of
 // the lone sphere's 3 pi mu d U (U the superficial velocity relative to the spheres):
 // Hasimoto's series as extended by Sangani & Acrivos (1982),
-// 1/K = 1 - 1.7601 phi^(1/3) + phi - 1.5593 phi^2 + 3.9799 phi^(7/3) - 3.0734 phi^(8/3).
-// Within 1% of Zick & Homsy's exact values up to phi = 0.064 (2.6% low at 0.125); a sphere
+// 1/K = 1 - 1.7601 phi^(1/3) + phi - 1.5593 phi^2 + 3.9799 phi^(8/3) - 3.0734 phi^(10/3).
+// Within 0.1% of Zick & Homsy's exact values up to phi = 0.125 (2.008, 2.810, 4.292); a sphere
 // settling in a periodic box of side L is such an array, phi = (pi/6) (d/L)^3, and sinks at
 // v_Stokes / K. Refused above phi = 0.125.
 double cubic_array_drag_factor(double phi);

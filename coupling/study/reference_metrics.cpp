@@ -62,7 +62,8 @@ Constants parse_constants(const CaseFile& c) {
       constants[name] = *x;
     } else if (const auto key = node.value<std::string>()) {
       if (!c.has(*key))
-        throw CaseError(context + " = \"" + *key + "\": the case has no key '" + *key + "'");
+        throw CaseError(context + " = \"" + *key + "\": the case does not set '" + *key +
+                        "' (a default is not read here): write it in the case, or give the number");
       try {
         constants[name] = c.number(*key);
       } catch (const CaseError& e) {

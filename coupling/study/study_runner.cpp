@@ -128,7 +128,8 @@ double remaining_seconds(const fs::path& dir) {
     const double t_end = used["time"]["end"].value<double>().value_or(NAN);
     if (t.rows() == 0 || !t.has("time") || !t.has("wall_seconds")) return NAN;
     const double now = t.columns.at("time").back(), wall = t.columns.at("wall_seconds").back();
-    if (!(now > 0.0) || !(wall > 0.0) || !(t_end > now)) return NAN;
+    if (!(now > 0.0) || !(wall > 0.0) || std::isnan(t_end)) return NAN;
+    if (now >= t_end) return 0.0;
     return wall * (t_end - now) / now;
   } catch (const std::exception&) {
     return NAN;
@@ -193,6 +194,8 @@ std::vector<PointOutcome> run_study(const Study& study, const StudyRunOptions& o
       const fs::path dir = o.out / study.points[k].name;
       fs::create_directories(dir);
       remove_run_result(dir);
+      // The ETA reads these while the point runs: an earlier run's must not stand for it.
+      for (const char* stale : {"diagnostics.csv", "case_used.toml"}) fs::remove(dir / stale);
       running[start_point(study, study.points[k], dir, o, threads)] = {k, now_seconds()};
     }
     int status = 0;

@@ -1,8 +1,9 @@
 // One sphere settling in a periodic box in 3D (examples/settling_sphere_3d), against Stokes over
 // Hasimoto's K for the cubic array the box makes: the reduced form of
-// examples/studies/settling_sphere.toml (docs/study.md). Measured in the full study: resolved
-// +15% at d/dx = 2.9, +3.8% at 4; unresolved +17% at d/dx = 0.5 and +93% at 2 (the grain drags
-// its own kernel's water along, so its slip, and its drag, are too small).
+// examples/studies/settling_sphere.toml (docs/study.md), over 0.15 s (steady from 0.05 s).
+// Measured here: resolved +15.1% at d/dx = 2.9, +3.9% at 4; unresolved +15.8% at d/dx = 0.5 and
+// +92% at 2 (the grain drags its own kernel's water along, so its slip, and its drag, are too
+// small).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -57,7 +58,7 @@ TEST(SettlingSphere, ResolvedErrorFallsWithDOverDxAndUnresolvedGrowsWithIt) {
   EXPECT_LT(std::abs(err["resolved_d4dx"]), 0.08);
   EXPECT_LT(std::abs(err["resolved_d4dx"]), std::abs(err["resolved_d2.9dx"]));
   // Unresolved: too fast, more so as the grain grows against the spacing.
-  EXPECT_GT(err["unresolved_d0.5dx"], 0.0);
+  EXPECT_GT(err["unresolved_d0.5dx"], 0.08);
   EXPECT_GT(err["unresolved_d2dx"], err["unresolved_d0.5dx"] + 0.3);
 }
 

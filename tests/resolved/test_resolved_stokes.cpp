@@ -5,7 +5,8 @@
 // over the box section) are compared, and the fluid's momentum balance rho g V_f - dM/dt = F
 // checks that what the fluid loses is what the body receives. The exact relations, with c the
 // solid volume (area) fraction:
-//   sphere   F = 6 pi mu a U K,  1/K = 1 - 1.7601 c^(1/3) + c - 1.5593 c^2 + 3.9799 c^(8/3)
+//   sphere   F = 6 pi mu a U K,
+//            1/K = 1 - 1.7601 c^(1/3) + c - 1.5593 c^2 + 3.9799 c^(8/3) - 3.0734 c^(10/3)
 //   cylinder F = 4 pi mu U / (-ln(c)/2 - 0.738 + c - 0.887 c^2 + 2.039 c^3)   (per unit length)
 // At Reynolds numbers of 1e-2 inertia is negligible. This checks the viscous exchange between
 // fluid and PMS particles (two thirds of a sphere's Stokes drag is viscous stress), which the
@@ -108,8 +109,8 @@ StokesResult periodic_array(double L, double dx, double a, double g) {
     const double ac =
         std::cbrt(3.0 * c * std::pow(L, 3) / (4.0 * M_PI));  // radius of the PMS volume
     r.ratio = f / (6 * M_PI * mu * ac * U);
-    r.exact =
-        1.0 / (1 - 1.7601 * std::cbrt(c) + c - 1.5593 * c * c + 3.9799 * std::pow(c, 8.0 / 3.0));
+    r.exact = 1.0 / (1 - 1.7601 * std::cbrt(c) + c - 1.5593 * c * c +
+                     3.9799 * std::pow(c, 8.0 / 3.0) - 3.0734 * std::pow(c, 10.0 / 3.0));
   } else {
     r.ratio = f / (mu * U);
     r.exact = 4 * M_PI / (-0.5 * std::log(c) - 0.738 + c - 0.887 * c * c + 2.039 * c * c * c);

@@ -69,10 +69,10 @@ TEST(ReferenceFormulas, TerminalVelocitiesAndErgun) {
   EXPECT_NEAR(eval("ergun_gradient(0.4, 1e-3, 1e-6, 1000, 1e-3)"), 860.15625, 1e-9);
   EXPECT_THROW(eval("schiller_naumann_velocity(1e-3, 900, 1000, 1e-6, 9.81)"), std::runtime_error);
   // Simple cubic arrays against Zick & Homsy (1982, Table 2): K = 2.008 at phi = 0.027, 2.810
-  // at 0.064; a lone sphere (phi -> 0) has K = 1.
-  EXPECT_NEAR(eval("cubic_array_drag_factor(0.027)"), 2.008, 0.01);
-  EXPECT_NEAR(eval("cubic_array_drag_factor(0.064)"), 2.810, 0.03);
-  EXPECT_DOUBLE_EQ(eval("cubic_array_drag_factor(0)"), 1.0);
+  // at 0.064, 4.292 at 0.125; a lone sphere (phi -> 0) has K = 1.
+  EXPECT_NEAR(eval("cubic_array_drag_factor(0.027)"), 2.008, 0.002);
+  EXPECT_NEAR(eval("cubic_array_drag_factor(0.064)"), 2.810, 0.003);
+  EXPECT_NEAR(eval("cubic_array_drag_factor(0.125)"), 4.292, 0.005);
   EXPECT_THROW(eval("cubic_array_drag_factor(0.2)"), std::runtime_error);
 }
 
@@ -106,6 +106,11 @@ TEST(DiagnosticsExpression, NamedConstantsAreNumbers) {
   // A constant is a number, not a column: min(d, 1) is the function of two numbers.
   EXPECT_DOUBLE_EQ(DiagnosticsExpression("min(d, 1)", c).evaluate(table()), 0.002);
   EXPECT_TRUE(DiagnosticsExpression("2 * d", c).columns().empty());
+  // A name given to a reduction is its column, also where a constant has that name.
+  EXPECT_DOUBLE_EQ(
+      DiagnosticsExpression("max(speed) + mean_after(speed, d)", {{"speed", 9.0}, {"d", 0.3}})
+          .evaluate(table()),
+      6.0 + 4.0);
   // Without the constant the name is a column read without a reduction.
   EXPECT_THROW(DiagnosticsExpression("2 * d"), std::invalid_argument);
 }

@@ -186,7 +186,7 @@ TEST_F(StudyFile, ReferenceConstantsFollowTheCase) {
     }
     return std::string("(no error)");
   };
-  EXPECT_NE(message("nu = \"fluid.viscosty\"\nk = 2\n").find("no key 'fluid.viscosty'"),
+  EXPECT_NE(message("nu = \"fluid.viscosty\"\nk = 2\n").find("does not set 'fluid.viscosty'"),
             std::string::npos);
   EXPECT_NE(message("nu = true\nk = 2\n").find("reference.constants.nu must be a number"),
             std::string::npos);
