@@ -58,7 +58,7 @@ Constants parse_constants(const CaseFile& c) {
     if (!word || name == "pi")
       throw CaseError(context +
                       ": a constant's name is a word of letters, digits and '_' (not pi)");
-    if (const auto x = node.value<double>(); x && !node.is_string()) {
+    if (const auto x = node.value<double>()) {
       constants[name] = *x;
     } else if (const auto key = node.value<std::string>()) {
       if (!c.has(*key))

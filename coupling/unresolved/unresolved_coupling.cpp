@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "format_number.hpp"
 #include "unresolved/drag_distribution.hpp"
 
 namespace isphdem {
@@ -29,9 +30,9 @@ void UnresolvedCoupling<Dim>::initialize(const DemState& dem, isph::IsphSolver<D
   for (int k = 0; k < Dim; ++k)
     if (d.periodic[k] && map_.support() > d.hi[k] - d.lo[k])
       throw std::runtime_error(
-          "the porosity kernel reaches " + std::to_string(map_.support()) +
+          "the porosity kernel reaches " + isph::format_number(map_.support()) +
           " m, farther than the periodic box is long on axis " + std::to_string(k) + " (" +
-          std::to_string(d.hi[k] - d.lo[k]) +
+          isph::format_number(d.hi[k] - d.lo[k]) +
           " m): lower unresolved.porosity_smoothing_length or make the box longer");
   for (const auto& a : dem.atoms) {
     if (!maps(a)) continue;

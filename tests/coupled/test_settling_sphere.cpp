@@ -1,39 +1,35 @@
 // One sphere settling in a periodic box in 3D (examples/settling_sphere_3d), against Stokes over
 // Hasimoto's K for the cubic array the box makes: the reduced form of
 // examples/studies/settling_sphere.toml (docs/study.md), over 0.15 s (steady from 0.05 s).
-// Measured here: resolved +15.1% at d/dx = 2.9, +3.9% at 4; unresolved +15.8% at d/dx = 0.5 and
+// Measured here: resolved +15.2% at d/dx = 2.9, +4.0% at 4; unresolved +15.8% at d/dx = 0.5 and
 // +92% at 2 (the grain drags its own kernel's water along, so its slip, and its drag, are too
 // small).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
-#include <sstream>
 
 #include "../cli/cli_support.hpp"
+#include "format_number.hpp"
 
 namespace isphdem::cli {
 namespace {
 
-std::string num(double x) {
-  std::ostringstream o;
-  o.precision(12);
-  o << x;
-  return o.str();
-}
+// Spacings such as 0.0006875 written whole (std::to_string rounds to six decimals).
+std::string number(double x) { return isph::format_number(x, 12); }
 
 std::string point(const std::string& name, const std::string& model, double dx, double dt,
                   double box) {
-  const std::string b = num(box), set_box = box > 0 ? ", \"dem.variables.box\" = " + b +
-                                                          ", \"domain.max\" = [" + b + ", " + b +
-                                                          ", " + b +
-                                                          "], \"fluid.blocks\" = [{ min = "
-                                                          "[0.0, 0.0, 0.0], max = [" +
-                                                          b + ", " + b + ", " + b + "] }]"
-                                                    : "";
+  const std::string b = number(box), set_box = box > 0 ? ", \"dem.variables.box\" = " + b +
+                                                             ", \"domain.max\" = [" + b + ", " + b +
+                                                             ", " + b +
+                                                             "], \"fluid.blocks\" = [{ min = "
+                                                             "[0.0, 0.0, 0.0], max = [" +
+                                                             b + ", " + b + ", " + b + "] }]"
+                                                       : "";
   return "[[points]]\nname = \"" + name + "\"\nset = { \"coupling.model\" = \"" + model +
-         "\", \"particles.spacing\" = " + num(dx) + ", \"time.dt\" = " + num(dt) +
-         ", \"dem.variables.dem_dt\" = " + num(dt / 10) + set_box + " }\n";
+         "\", \"particles.spacing\" = " + number(dx) + ", \"time.dt\" = " + number(dt) +
+         ", \"dem.variables.dem_dt\" = " + number(dt / 10) + set_box + " }\n";
 }
 
 TEST(SettlingSphere, ResolvedErrorFallsWithDOverDxAndUnresolvedGrowsWithIt) {
