@@ -76,7 +76,6 @@ StepStats IsphSolver<Dim>::step(double dt) {
   {
     Stopwatch w(timings_.operators);
     detect_free_surface();
-    add_surface_ghosts();
     compute_operator_weights();
   }
   StepStats stats;
@@ -87,7 +86,6 @@ StepStats IsphSolver<Dim>::step(double dt) {
     compute_eddy_viscosity();
     predict(dt);
     set_wall_u_star(dt);
-    set_ghost_u_star();
     mark_full_support();
     compute_pressure_rhs(dt);
   }
@@ -105,7 +103,6 @@ StepStats IsphSolver<Dim>::step(double dt) {
     follow_enclosing_solids(particles_, nb_, config_.pocket_solid_fraction, config_.density, dt);
     shift(dt);
     advect(dt, stats);
-    remove_surface_ghosts();
   }
   time_ += dt;
   ++steps_;

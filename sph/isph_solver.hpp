@@ -25,7 +25,6 @@
 #include "porous_medium.hpp"
 #include "pressure_equation.hpp"
 #include "shifting.hpp"
-#include "surface_ghosts.hpp"
 #include "time_step.hpp"
 
 namespace isph {
@@ -77,11 +76,6 @@ struct IsphConfig {
   // circulation tank, whose flow is 5 mm/s. Off by default: it moves the tank's break-up from
   // 1.33 s to 1.87 s, not to the 10 s (docs/fluid.md, "Known limitations").
   bool surface_refill = false;
-  // A ghost layer above the free surface for each step (sph/surface_ghosts.hpp): the rows next to
-  // the surface get a complete support, so their number density is held at n0 like the
-  // interior's and they shift freely; p = 0 moves to the surface line half a spacing above the
-  // top row.
-  bool surface_ghosts = false;
   // Smagorinsky eddy viscosity nu_T = (C_s dx)^2 sqrt(2 S:S), added to nu in the viscous term.
   bool smagorinsky = false;
   double smagorinsky_constant = 0.1;
@@ -171,9 +165,6 @@ class IsphSolver {
   void shift(double dt);                     // step_shifting.cpp
   void advect(double dt, StepStats& stats);  // step_correction.cpp
   void update_forcing_kinds();
-  void add_surface_ghosts();     // step_surface_ghosts.cpp
-  void set_ghost_u_star();       // step_surface_ghosts.cpp
-  void remove_surface_ghosts();  // step_surface_ghosts.cpp
   void keep_off_walls(int i);
   const ForcingZone<Dim>* zone_of(const Vec<Dim>& x) const;
   // Where the fastest particle is and what its support holds (for the CFL stop message).
@@ -200,9 +191,6 @@ class IsphSolver {
   PorousMedium<Dim> porous_;
   std::vector<double> number_density_, divergence_r_, rhs_, eddy_viscosity_;
   std::vector<double> surface_depth_;  // empty unless surface_refill acts
-  // Dirichlet values of the pressure rows [Pa] (empty: p = 0 on every free-surface row).
-  std::vector<double> dirichlet_pressure_;
-  SurfaceGhosts<Dim> ghosts_;  // this step's ghost layer (none unless surface_ghosts)
   double max_eddy_viscosity_ = 0.0;
   std::vector<Vec<Dim>> u_star_, wall_ghost_, shift_;
   std::vector<uint8_t> operator_mode_, full_support_, shift_mode_, dry_wall_;

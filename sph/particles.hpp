@@ -8,9 +8,8 @@
 
 namespace isph {
 
-// Values are part of the output contract (/fluid/kind). Ghosts above the free surface
-// (sph/surface_ghosts.hpp) exist only within a step and never reach the output.
-enum Kind : int32_t { kFluid = 0, kWall = 1, kSolid = 2, kForcing = 3, kGhost = 4 };
+// Values are part of the output contract (/fluid/kind).
+enum Kind : int32_t { kFluid = 0, kWall = 1, kSolid = 2, kForcing = 3 };
 
 template <int Dim>
 struct Particles {

@@ -27,7 +27,7 @@ void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb
                        const Operators<Dim>& op, const std::vector<double>& rhs,
                        const Vec<Dim>& gravity, double rho0, double h, PressureSystem<Dim>& out,
                        const std::vector<double>* coefficient,
-                       const std::vector<double>* dirichlet_value) {
+                       const std::vector<double>* surface_depth) {
   const int n = static_cast<int>(particles.size());
   // Interior rows are scaled by h^2 so that all rows have O(1) coefficients.
   const double scale = h * h;
@@ -112,8 +112,8 @@ void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb
     if (dirichlet || (op.order[i] == 0 && !wall)) {
       const int d = put_neighbors([](int) { return 0.0; });
       val[d] = 1.0;
-      // Non-surface rows here (the pin, isolated particles) have the value 0.
-      out.b[i] = dirichlet_value ? (*dirichlet_value)[i] : 0.0;
+      // Non-surface rows here (the pin, isolated particles) have depth 0.
+      out.b[i] = surface_depth ? rho0 * gravity.norm() * (*surface_depth)[i] : 0.0;
       continue;
     }
     if (wall) {

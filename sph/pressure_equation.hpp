@@ -2,8 +2,8 @@
 // Assembly of the pressure Poisson equation. One row per particle:
 //  - fluid-like particles (fluid, forcing zone, PMS solid): lap p_i = rhs_i with the corrected
 //    Laplacian;
-//  - free-surface particles and ghosts: p_i = 0, or dirichlet_value[i] when given (the hydrostatic
-//    pressure of surface_depth in sph/free_surface.hpp, a ghost's value in surface_ghosts.hpp);
+//  - free-surface particles: p_i = 0, or the hydrostatic rho0 |g| surface_depth[i] when given
+//    (surface_depth in sph/free_surface.hpp);
 //  - wall/dummy particles: p_w = sum_f W_wf (p_f + rho0 (g - a_w).(x_w - x_f)) / sum_f W_wf over
 //    fluid neighbours f (Adami et al. 2012 extrapolation, solved implicitly with the fluid so
 //    the wall condition and the interior equation are consistent in one system);
@@ -66,6 +66,6 @@ void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb
                        const Operators<Dim>& op, const std::vector<double>& rhs,
                        const Vec<Dim>& gravity, double rho0, double h, PressureSystem<Dim>& out,
                        const std::vector<double>* coefficient = nullptr,
-                       const std::vector<double>* dirichlet_value = nullptr);
+                       const std::vector<double>* surface_depth = nullptr);
 
 }  // namespace isph

@@ -21,7 +21,7 @@ void IsphSolver<Dim>::correct(double dt) {
   const double rho0 = config_.density;
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < n; ++i) {
-    if (P.kind[i] == kWall || P.kind[i] == kGhost) continue;
+    if (P.kind[i] == kWall) continue;
     if (P.kind[i] == kForcing) {  // the pump: the zone velocity whatever the pressure
       P.v[i] = zone_of(P.x[i])->velocity_at(time_ + dt);
       continue;
@@ -42,8 +42,7 @@ void IsphSolver<Dim>::advect(double dt, StepStats& stats) {
     separate_close_pairs(P, nb_, domain_, dt, kMinPairDistance * P.spacing, shift_);
   double vmax = 0.0;
   for (int i = 0; i < n; ++i) {
-    // Solids are placed by their body; ghosts are dropped after the step.
-    if (P.kind[i] == kWall || P.kind[i] == kSolid || P.kind[i] == kGhost) continue;
+    if (P.kind[i] == kWall || P.kind[i] == kSolid) continue;  // solids: placed by their body
     P.x[i] += dt * P.v[i] + shift_[i];
     keep_off_walls(i);
     domain_.wrap(P.x[i]);

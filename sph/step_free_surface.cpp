@@ -45,11 +45,10 @@ void IsphSolver<Dim>::mark_full_support() {
   full_support_.assign(n, 0);
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < n; ++i) {
-    if (P.kind[i] == kWall || P.kind[i] == kGhost || P.surface[i]) continue;
-    // Ghosts complete the support: a particle next to them is not truncated.
+    if (P.kind[i] == kWall || P.surface[i]) continue;
     bool near_surface = false;
     for (int k = nb_.begin(i); k < nb_.end(i) && !near_surface; ++k)
-      near_surface = P.surface[nb_.index[k]] && P.kind[nb_.index[k]] != kGhost;
+      near_surface = P.surface[nb_.index[k]];
     full_support_[i] = !near_surface;
   }
 }

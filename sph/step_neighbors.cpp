@@ -20,15 +20,13 @@ void IsphSolver<Dim>::find_neighbors() {
 template <int Dim>
 void IsphSolver<Dim>::compute_operator_weights() {
   const int n = static_cast<int>(particles_.size());
-  // Walls and ghosts (Dirichlet rows) need no operators; free-surface particles get the robust first-order forms (a
+  // Walls need no operators; free-surface particles get the robust first-order forms (a
   // one-sided quadratic fit extrapolates). Their neighbours keep the quadratic fit: the Brookshaw
   // Laplacian is not exact for a linear (hydrostatic) field on a truncated support, and still
   // water drifted and blew up after 6000 steps with it.
   operator_mode_.resize(n);
   for (int i = 0; i < n; ++i)
-    operator_mode_[i] = particles_.kind[i] == kWall || particles_.kind[i] == kGhost
-                            ? 0
-                            : (particles_.surface[i] ? 1 : 2);
+    operator_mode_[i] = particles_.kind[i] == kWall ? 0 : (particles_.surface[i] ? 1 : 2);
   compute_operators(nb_, kernel_.h(), particles_.volume, operator_mode_, op_);
 }
 

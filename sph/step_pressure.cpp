@@ -42,19 +42,9 @@ void IsphSolver<Dim>::compute_pressure_rhs(double dt) {
 
 template <int Dim>
 void IsphSolver<Dim>::assemble_pressure_system() {
-  const std::size_t n = particles_.size();
-  dirichlet_pressure_.clear();
-  if (!surface_depth_.empty() || !ghosts_.x.empty()) {
-    dirichlet_pressure_.assign(n, 0.0);
-    const double rho_g = config_.density * config_.gravity.norm();
-    for (std::size_t i = 0; i < surface_depth_.size(); ++i)
-      dirichlet_pressure_[i] = rho_g * surface_depth_[i];
-    for (std::size_t g = 0; g < ghosts_.x.size(); ++g)
-      dirichlet_pressure_[ghosts_.real + g] = ghosts_.pressure[g];
-  }
   assemble_pressure(particles_, nb_, op_, rhs_, config_.gravity, config_.density, kernel_.h(),
                     system_, porous_.active() ? &porous_.pressure_coefficient() : nullptr,
-                    dirichlet_pressure_.empty() ? nullptr : &dirichlet_pressure_);
+                    surface_depth_.empty() ? nullptr : &surface_depth_);
 }
 
 template <int Dim>

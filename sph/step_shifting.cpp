@@ -1,7 +1,6 @@
 // Stage 6 of a step: particle shifting (free inside the fluid, tangential at the free surface)
 // and the limited Taylor correction of velocities to the shifted positions.
 #include <algorithm>
-#include <cstdlib>
 
 #include "isph_solver.hpp"
 
@@ -29,9 +28,6 @@ void IsphSolver<Dim>::shift(double dt) {
     }
   }
   compute_shifts(P, nb_, kernel_, config_.shifting, dt, shift_mode_, shift_);
-  if (std::getenv("GHOST_TANGENTIAL"))
-    for (std::size_t i = 0; i < ghosts_.normal.size() && !ghosts_.x.empty(); ++i)
-      if (ghosts_.has_ghost[i]) shift_[i] -= shift_[i].dot(ghosts_.normal[i]) * ghosts_.normal[i];
   if (!surface_depth_.empty()) {
     // Lift exposed second-row particles onto the surface line (surface_refill).
     const Vec<Dim> up = -config_.gravity.normalized();

@@ -49,7 +49,6 @@ std::vector<std::string> fluid_scene_keys() {
           "solver.surface_divergence",
           "solver.surface_scan",
           "solver.surface_refill",
-          "solver.surface_ghosts",
           "solver.smagorinsky",
           "solver.smagorinsky_constant",
           "inflow.min",
@@ -260,7 +259,6 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
   cfg.surface.divergence = c.positive("solver.surface_divergence", Dim == 2 ? 1.5 : 2.4);
   cfg.surface.scan = c.boolean("solver.surface_scan", cfg.surface.scan);
   cfg.surface_refill = c.boolean("solver.surface_refill", cfg.surface_refill);
-  cfg.surface_ghosts = c.boolean("solver.surface_ghosts", cfg.surface_ghosts);
   cfg.smagorinsky = c.boolean("solver.smagorinsky", cfg.smagorinsky);
   cfg.smagorinsky_constant = c.positive("solver.smagorinsky_constant", cfg.smagorinsky_constant);
 
