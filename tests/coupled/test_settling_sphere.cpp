@@ -20,16 +20,15 @@ std::string number(double x) { return isph::format_number(x, 12); }
 
 std::string point(const std::string& name, const std::string& model, double dx, double dt,
                   double box) {
-  const std::string b = number(box), set_box = box > 0 ? ", \"dem.variables.box\" = " + b +
-                                                             ", \"domain.max\" = [" + b + ", " + b +
-                                                             ", " + b +
-                                                             "], \"fluid.blocks\" = [{ min = "
-                                                             "[0.0, 0.0, 0.0], max = [" +
-                                                             b + ", " + b + ", " + b + "] }]"
-                                                       : "";
-  return "[[points]]\nname = \"" + name + "\"\nset = { \"coupling.model\" = \"" + model +
-         "\", \"particles.spacing\" = " + number(dx) + ", \"time.dt\" = " + number(dt) +
-         ", \"dem.variables.dem_dt\" = " + number(dt / 10) + set_box + " }\n";
+  std::string set = "\"coupling.model\" = \"" + model +
+                    "\", \"particles.spacing\" = " + number(dx) + ", \"time.dt\" = " + number(dt) +
+                    ", \"dem.variables.dem_dt\" = " + number(dt / 10);
+  if (box > 0) {  // the box edge, and the water and domain that fill it
+    const std::string b = number(box), corner = "[" + b + ", " + b + ", " + b + "]";
+    set += ", \"dem.variables.box\" = " + b + ", \"domain.max\" = " + corner +
+           ", \"fluid.blocks\" = [{ min = [0.0, 0.0, 0.0], max = " + corner + " }]";
+  }
+  return "[[points]]\nname = \"" + name + "\"\nset = { " + set + " }\n";
 }
 
 TEST(SettlingSphere, ResolvedErrorFallsWithDOverDxAndUnresolvedGrowsWithIt) {
