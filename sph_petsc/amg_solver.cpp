@@ -78,7 +78,10 @@ class AmgSolver : public LinearSolver {
  public:
   explicit AmgSolver(const LinearSolverConfig& c) : config_(c) {
     insert_options(c.backend_options);
-    check_petsc(KSPCreate(PETSC_COMM_SELF, &ksp_.h), "creating the PPE solver");
+    MPI_Comm_size(PETSC_COMM_WORLD, &ranks_);
+    MPI_Comm_rank(PETSC_COMM_WORLD, &rank_);
+    comm_ = ranks_ > 1 ? PETSC_COMM_WORLD : PETSC_COMM_SELF;
+    check_petsc(KSPCreate(comm_, &ksp_.h), "creating the PPE solver");
     check_petsc(KSPSetType(ksp_.h, KSPBCGS), "setting BiCGSTAB");
     PC pc = nullptr;
     check_petsc(KSPGetPC(ksp_.h, &pc), "getting the preconditioner");
@@ -108,13 +111,15 @@ class AmgSolver : public LinearSolver {
       A = &compressed;
     }
     const int n = static_cast<int>(A->rows());
-    const bool resized = static_cast<int>(rows_.size()) != n + 1;
+    const bool resized = n != size_;
     load_matrix(*A);
-    // The rows as BoomerAMG expects them, diagonal positive (see row_sign_).
-    signed_b_ = b.cwiseProduct(row_sign_);
+    // This rank's rows as BoomerAMG expects them, diagonal positive (see row_sign_).
+    signed_b_ = b.segment(first_, row_sign_.size()).cwiseProduct(row_sign_);
 
     const bool rebuild = resized || solves_since_setup_ >= std::max(config_.setup_reuse, 1) ||
                          last_iterations_ > 1.5 * iterations_after_setup_ + 2;
+    // PETSc keeps the old local sizes in the preconditioner until it is reset.
+    if (resized) check_petsc(KSPReset(ksp_.h), "resetting the solver for a new size");
     check_petsc(KSPSetOperators(ksp_.h, mat_.h, mat_.h), "giving the matrix to the solver");
     check_petsc(KSPSetReusePreconditioner(ksp_.h, rebuild ? PETSC_FALSE : PETSC_TRUE),
                 "keeping the AMG hierarchy");
@@ -130,13 +135,22 @@ class AmgSolver : public LinearSolver {
       s.setup_seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
+    // Each rank's block of x is solved in place, then gathered, so that every rank holds the
+    // whole pressure (the particles are replicated on every rank).
+    const int m = static_cast<int>(row_sign_.size());
     Vec bv = nullptr, xv = nullptr;
-    check_petsc(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n, signed_b_.data(), &bv), "wrapping b");
-    check_petsc(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n, x.data(), &xv), "wrapping x");
+    if (ranks_ > 1) {
+      check_petsc(VecCreateMPIWithArray(comm_, 1, m, n, signed_b_.data(), &bv), "wrapping b");
+      check_petsc(VecCreateMPIWithArray(comm_, 1, m, n, x.data() + first_, &xv), "wrapping x");
+    } else {
+      check_petsc(VecCreateSeqWithArray(comm_, 1, n, signed_b_.data(), &bv), "wrapping b");
+      check_petsc(VecCreateSeqWithArray(comm_, 1, n, x.data(), &xv), "wrapping x");
+    }
     const PetscErrorCode solved = KSPSolve(ksp_.h, bv, xv);
     VecDestroy(&bv);
     VecDestroy(&xv);
     check_petsc(solved, "solving the PPE");
+    if (ranks_ > 1) gather_blocks(x);
 
     PetscInt its = 0;
     KSPGetIterationNumber(ksp_.h, &its);
@@ -161,53 +175,99 @@ class AmgSolver : public LinearSolver {
   }
 
  private:
-  // Values in place while the pattern is the one the Mat holds, else a new Mat. Rows whose
-  // diagonal is negative (the Laplacian rows; wall and Dirichlet rows have +1) enter negated:
-  // the solution and |b - A x| stay the same, and AMG's strength of connection and its smoother
-  // see one sign convention. With the mixed signs the 2D dam break stalled in the PPE.
+  // Rows [first_, first_ + m) of A on this rank: contiguous blocks of the particles' storage
+  // order, which is sorted by cell, so each rank's rows are a compact region. Values in place
+  // while the pattern is the one the Mat holds, else a new Mat. Rows whose diagonal is negative
+  // (the Laplacian rows; wall and Dirichlet rows have +1) enter negated: the solution and
+  // |b - A x| stay the same, and AMG's strength of connection and its smoother see one sign
+  // convention. With the mixed signs the 2D dam break stalled in the PPE.
   void load_matrix(const SparseMatrix& A) {
     const int n = static_cast<int>(A.rows());
-    const int nnz = static_cast<int>(A.nonZeros());
-    row_sign_.resize(n);
+    first_ = static_cast<int>(static_cast<long>(n) * rank_ / ranks_);
+    const int last = static_cast<int>(static_cast<long>(n) * (rank_ + 1) / ranks_);
+    const int m = last - first_;
+    const int* outer = A.outerIndexPtr() + first_;
+    const int* inner = A.innerIndexPtr() + outer[0];
+    const double* v = A.valuePtr() + outer[0];
+    const int nnz = outer[m] - outer[0];
+    row_sign_.resize(m);
     signed_values_.resize(nnz);
-    const int* outer = A.outerIndexPtr();
-    const int* inner = A.innerIndexPtr();
-    const double* v = A.valuePtr();
-    for (int i = 0; i < n; ++i) {
+    for (int i = 0; i < m; ++i) {
       double diagonal = 0.0;
-      for (int k = outer[i]; k < outer[i + 1]; ++k)
-        if (inner[k] == i) diagonal = v[k];
+      for (int k = outer[i] - outer[0]; k < outer[i + 1] - outer[0]; ++k)
+        if (inner[k] == first_ + i) diagonal = v[k];
       row_sign_[i] = diagonal < 0.0 ? -1.0 : 1.0;
-      for (int k = outer[i]; k < outer[i + 1]; ++k) signed_values_[k] = row_sign_[i] * v[k];
+      for (int k = outer[i] - outer[0]; k < outer[i + 1] - outer[0]; ++k)
+        signed_values_[k] = row_sign_[i] * v[k];
     }
-    const bool same_pattern =
-        mat_.h && static_cast<int>(rows_.size()) == n + 1 &&
-        nnz == static_cast<int>(columns_.size()) &&
-        std::equal(A.outerIndexPtr(), A.outerIndexPtr() + n + 1, rows_.begin()) &&
-        std::equal(A.innerIndexPtr(), A.innerIndexPtr() + nnz, columns_.begin());
+    bool same_pattern = mat_.h && n == size_ && static_cast<int>(rows_.size()) == m + 1 &&
+                        nnz == static_cast<int>(columns_.size()) &&
+                        std::equal(inner, inner + nnz, columns_.begin());
+    for (int i = 0; same_pattern && i <= m; ++i) same_pattern = outer[i] - outer[0] == rows_[i];
+    // Every rank must take the same branch: a new Mat is made collectively.
+    if (ranks_ > 1) {
+      int same = same_pattern ? 1 : 0;
+      MPI_Allreduce(MPI_IN_PLACE, &same, 1, MPI_INT, MPI_MIN, comm_);
+      same_pattern = same == 1;
+    }
     if (same_pattern) {
-      PetscScalar* values = nullptr;
-      check_petsc(MatSeqAIJGetArray(mat_.h, &values), "updating the matrix");
-      std::memcpy(values, signed_values_.data(), sizeof(double) * nnz);
-      check_petsc(MatSeqAIJRestoreArray(mat_.h, &values), "updating the matrix");
+      update_values(m, n);
       return;
     }
     mat_.reset();
-    rows_.assign(A.outerIndexPtr(), A.outerIndexPtr() + n + 1);
-    columns_.assign(A.innerIndexPtr(), A.innerIndexPtr() + nnz);
-    check_petsc(MatCreate(PETSC_COMM_SELF, &mat_.h), "creating the matrix");
+    size_ = n;
+    rows_.resize(m + 1);
+    for (int i = 0; i <= m; ++i) rows_[i] = outer[i] - outer[0];
+    columns_.assign(inner, inner + nnz);
+    if (ranks_ > 1) {
+      // Filled from the CSR arrays in one go (row lengths = neighbour counts).
+      check_petsc(MatCreateMPIAIJWithArrays(comm_, m, m, n, n, rows_.data(), columns_.data(),
+                                            signed_values_.data(), &mat_.h),
+                  "filling the distributed matrix");
+      return;
+    }
+    check_petsc(MatCreate(comm_, &mat_.h), "creating the matrix");
     check_petsc(MatSetSizes(mat_.h, n, n, n, n), "sizing the matrix");
     check_petsc(MatSetType(mat_.h, MATSEQAIJ), "choosing AIJ storage");
-    // Preallocated and filled from the CSR arrays in one go (row lengths = neighbour counts).
     check_petsc(
         MatSeqAIJSetPreallocationCSR(mat_.h, rows_.data(), columns_.data(), signed_values_.data()),
         "filling the matrix");
   }
 
+  void update_values(int m, int n) {
+    if (ranks_ > 1) {
+      check_petsc(MatUpdateMPIAIJWithArrays(mat_.h, m, m, n, n, rows_.data(), columns_.data(),
+                                            signed_values_.data()),
+                  "updating the distributed matrix");
+      return;
+    }
+    PetscScalar* values = nullptr;
+    check_petsc(MatSeqAIJGetArray(mat_.h, &values), "updating the matrix");
+    std::memcpy(values, signed_values_.data(), sizeof(double) * signed_values_.size());
+    check_petsc(MatSeqAIJRestoreArray(mat_.h, &values), "updating the matrix");
+  }
+
+  // Every rank's block of x to every rank.
+  void gather_blocks(Eigen::VectorXd& x) const {
+    const long n = x.size();
+    std::vector<int> counts(ranks_), starts(ranks_);
+    for (int r = 0; r < ranks_; ++r) {
+      starts[r] = static_cast<int>(n * r / ranks_);
+      counts[r] = static_cast<int>(n * (r + 1) / ranks_) - starts[r];
+    }
+    // MPI's default error handler aborts every rank on failure: nothing to check here.
+    MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, x.data(), counts.data(), starts.data(),
+                   MPI_DOUBLE, comm_);
+  }
+
   LinearSolverConfig config_;
   Owned<KSP, KSPDestroy> ksp_;
   Owned<Mat, MatDestroy> mat_;
-  std::vector<PetscInt> rows_, columns_;  // the Mat's pattern (its size: rows_.size() - 1)
+  MPI_Comm comm_ = PETSC_COMM_SELF;  // PETSC_COMM_WORLD when the run has several ranks
+  int ranks_ = 1, rank_ = 0;
+  int size_ = -1;                         // rows of the whole system the Mat holds (-1: none yet)
+  int first_ = 0;                         // this rank's first row
+  std::vector<PetscInt> rows_, columns_;  // this rank's rows of the Mat (local row pointers)
   Eigen::VectorXd row_sign_, signed_b_;
   std::vector<double> signed_values_;
   int solves_since_setup_ = 0;

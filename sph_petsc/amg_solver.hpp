@@ -2,7 +2,10 @@
 // The pressure equation on PETSc: the matrix sph/ assembles (Eigen CSR) copied into a SeqAIJ
 // Mat, a Krylov solver (BiCGSTAB unless -ksp_type says otherwise) right-preconditioned with
 // hypre's BoomerAMG, so that the residual PETSc tests is the true one, |b - A x|, as on the
-// Eigen path. Reuse between solves:
+// Eigen path. On several MPI ranks (PETSC_COMM_WORLD larger than one) the system is one
+// distributed MPIAIJ matrix: every rank passes the whole (replicated) system, enters its own
+// contiguous block of rows, and gets the whole solution back; all ranks must call solve() together
+// with the same system. Reuse between solves:
 //  - the Mat keeps its storage while the sparsity pattern stays the same (only the values are
 //    copied), else it is made anew;
 //  - x comes in as the initial guess (the previous pressure);

@@ -78,6 +78,13 @@ TEST(AmgSolver, ReusedSetupAndChangedValuesGiveTheNewSolution) {
   EXPECT_EQ(second.setup_seconds, 0.0);  // no new setup
   EXPECT_LE((m.sys.b - A2 * x2).norm(), 1.01e-10 * m.sys.b.norm());
   EXPECT_GT((x2 - x).norm(), 1e-6 * x.norm());  // it did solve the changed system
+  // Another size (particles added or removed): a new matrix and hierarchy.
+  ManufacturedSystem finer(0.015);
+  Eigen::VectorXd x3 = Eigen::VectorXd::Zero(finer.p.size());
+  const SolveStats third = solver->solve(finer.sys.A, finer.sys.b, x3);
+  ASSERT_TRUE(third.converged) << third.reason;
+  EXPECT_GT(third.setup_seconds, 0.0);
+  EXPECT_LE((finer.sys.b - finer.sys.A * x3).norm(), 1.01e-10 * finer.sys.b.norm());
 }
 
 TEST(AmgSolver, TooFewIterationsReportPetscsReason) {
