@@ -31,6 +31,7 @@
 #include "run/dem_only_run.hpp"
 #include "run/erosion_diagnostics.hpp"
 #include "run/fluid_run.hpp"
+#include "run/replicated_ranks.hpp"
 #include "run/run_report.hpp"
 #include "study/run_result.hpp"
 #include "unresolved/unresolved_coupling.hpp"
@@ -92,14 +93,20 @@ bool run_to_end(Run& run, const RunSettings& settings, double end_tolerance,
   return true;
 }
 
+// A fluid-only case. On several ranks (mpirun) every rank holds all particles and steps them
+// alike; the pressure equation is one system over the ranks (solver.preconditioner = "amg"), and
+// rank 0 writes the output and talks.
 template <int Dim>
 int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  const bool talk = rank == 0 && !args.quiet;
   const RunSettings settings = parse_run_settings(c);
   FluidRun<Dim> run(build_fluid_scene<Dim>(c), settings);
   auto& solver = run.solver();
   const auto& P = solver.particles();
 
-  if (!args.quiet) {
+  if (talk) {
     const auto l = solver.limits();
     std::printf("isphdem run: %s (%dD)\n  particles: %zu fluid, %zu wall; dx = %g m, h = %g m\n",
                 c.path().string().c_str(), Dim, P.count(isph::kFluid), P.count(isph::kWall),
@@ -120,49 +127,57 @@ int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
       "max_speed",      "dt",           "ppe_residual",      "surface_particles",
       "kinetic_energy", "fluid_volume", "max_eddy_viscosity"};
   report.check_columns(columns);  // before the writer clears an earlier run's output
-  SnapshotWriter writer(args.out);
-  // The case as run, overrides applied, next to the results.
-  {
+  std::unique_ptr<SnapshotWriter> writer;
+  std::unique_ptr<DiagnosticsWriter> diagnostics;
+  if (rank == 0) {
+    writer = std::make_unique<SnapshotWriter>(args.out);
+    // The case as run, overrides applied, next to the results.
     std::ofstream f(args.out / "case_used.toml");
     f << "# " << c.path().string() << " with the overrides of this run\n" << c.table() << "\n";
+    diagnostics = std::make_unique<DiagnosticsWriter>(args.out / "diagnostics.csv", columns);
   }
-  DiagnosticsWriter diagnostics(args.out / "diagnostics.csv", columns);
   auto snapshot = [&]() {
-    Snapshot s;
-    s.step = solver.steps();
-    s.time = solver.time();
-    add_fluid_group(solver.particles(), s);
-    writer.write(s);
+    check_replicas(P, solver.steps());
+    write_on_rank_zero(rank, [&] {
+      Snapshot s;
+      s.step = solver.steps();
+      s.time = solver.time();
+      add_fluid_group(solver.particles(), s);
+      writer->write(s);
+    });
   };
 
   const double start = omp_get_wtime();
-  ProgressLine progress(settings.t_end, !args.quiet);
+  ProgressLine progress(settings.t_end, talk);
   snapshot();
   long ppe_total = 0;
   auto after_step = [&](const isph::StepStats& st) {
     ppe_total += st.ppe_iterations;
     const long step = solver.steps();
-    if (step % settings.diagnostics_every == 0) {
+    if (rank == 0 && step % settings.diagnostics_every == 0) {
       double ke = 0.0;
       for (std::size_t i = 0; i < P.size(); ++i)
         if (P.kind[i] != isph::kWall)
           ke += 0.5 * solver.config().density * P.volume * P.v[i].squaredNorm();
-      diagnostics.row({solver.time(), double(step), omp_get_wtime() - start,
-                       double(st.ppe_iterations), st.max_speed, st.dt, st.ppe_residual,
-                       double(st.surface_particles), ke, st.fluid_volume, st.max_eddy_viscosity});
+      write_on_rank_zero(rank, [&] {
+        diagnostics->row({solver.time(), double(step), omp_get_wtime() - start,
+                          double(st.ppe_iterations), st.max_speed, st.dt, st.ppe_residual,
+                          double(st.surface_particles), ke, st.fluid_volume,
+                          st.max_eddy_viscosity});
+      });
     }
     progress.update(solver.time(), step);
   };
   std::string why, cause;
-  const bool finished =
-      run_to_end(run, settings, 1e-12, after_step, snapshot, progress, true, args.out, why, cause);
+  const bool finished = run_to_end(run, settings, 1e-12, after_step, snapshot, progress, rank == 0,
+                                   args.out, why, cause);
   report.cost(solver.time(), solver.steps(), long(P.size()), omp_get_wtime() - start, ppe_total);
   if (!finished) {
     report.stopped(why, cause);
     return 1;
   }
 
-  if (!args.quiet) {
+  if (talk) {
     const double wall = omp_get_wtime() - start;
     const auto& t = solver.timings();
     const long steps = solver.steps();
@@ -307,6 +322,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   }
   auto snapshot = [&]() {
     const DemState& state = backend.state();  // collective
+    check_replicas(P, solver.steps());
     if (rank != 0) return;
     Snapshot s;
     s.step = solver.steps();
@@ -321,7 +337,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
       hydro.body_torque[l.body_ids[k]] = l.body_torque[k];
     }
     add_dem_groups(state, hydro, s, &models);
-    writer->write(s);
+    write_on_rank_zero(rank, [&] { writer->write(s); });
   };
   const double start = omp_get_wtime();
   ProgressLine progress(settings.t_end, talk);
@@ -376,7 +392,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
                                 t.coupling,
                                 t.fluid};
         for (double v : ErosionDiagnostics<Dim>::row(erosion.measure(state, P))) row.push_back(v);
-        diagnostics->row(row);
+        write_on_rank_zero(rank, [&] { diagnostics->row(row); });
       }
     }
     if (rank == 0) progress.update(solver.time(), step);

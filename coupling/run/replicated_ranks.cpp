@@ -1,0 +1,61 @@
+#include "run/replicated_ranks.hpp"
+
+#include <mpi.h>
+
+#include <array>
+#include <cstdio>
+#include <string>
+
+#include "format_number.hpp"
+#include "isph_solver.hpp"
+
+namespace isphdem {
+
+template <int Dim>
+void check_replicas(const isph::Particles<Dim>& P, long step) {
+  int ranks = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  if (ranks == 1) return;
+  // Sums in storage order: equal copies give bit-equal sums; different ones almost never do.
+  std::array<double, 4> sum{double(P.size()), 0.0, 0.0, 0.0};
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    sum[1] += P.x[i].sum();
+    sum[2] += P.v[i].sum();
+    sum[3] += P.p[i];
+  }
+  std::array<double, 4> lo = sum, hi = sum;
+  MPI_Allreduce(MPI_IN_PLACE, lo.data(), 4, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, hi.data(), 4, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  if (lo == hi) return;
+  const char* what[] = {"particle counts", "sums of positions", "sums of velocities",
+                        "sums of pressures"};
+  int k = 0;
+  while (lo[k] == hi[k]) ++k;
+  throw isph::SimulationError(
+      "the ranks' copies of the fluid differ at step " + std::to_string(step) + " (" + what[k] +
+          " from " + isph::format_number(lo[k], 17) + " to " + isph::format_number(hi[k], 17) +
+          "): every rank must step the fluid alike; run all ranks with the same "
+          "OMP_NUM_THREADS, or on one rank",
+      "replicas");
+}
+
+void write_on_rank_zero(int rank, const std::function<void()>& write) {
+  if (rank != 0) return;
+  try {
+    write();
+  } catch (const std::exception& e) {
+    int ranks = 1;
+    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+    if (ranks == 1) throw;
+    std::fprintf(stderr,
+                 "isphdem run: rank 0 could not write the output: %s\n"
+                 "  stopping all %d ranks; the snapshots written before are complete.\n",
+                 e.what(), ranks);
+    MPI_Abort(MPI_COMM_WORLD, 2);
+  }
+}
+
+template void check_replicas<2>(const isph::Particles<2>&, long);
+template void check_replicas<3>(const isph::Particles<3>&, long);
+
+}  // namespace isphdem

@@ -1,0 +1,24 @@
+#pragma once
+// `isphdem run` on several MPI ranks, as it is today: every rank holds the whole fluid and steps
+// it alike (only the pressure equation is one system over the ranks, sph_petsc/), and rank 0
+// writes the output. Two things follow: the copies must stay identical, or each rank would enter
+// its rows of the pressure system from a different flow (checked at every snapshot: a cheap sum
+// of positions, velocities and pressures compared bit for bit); and a failure of rank 0's output
+// must stop the other ranks, which are already waiting for it in the next pressure solve.
+#include <functional>
+
+#include "particles.hpp"
+
+namespace isphdem {
+
+// isph::SimulationError (cause "replicas") naming the step when the ranks' copies differ; does
+// nothing on one rank. Collective: every rank must call it.
+template <int Dim>
+void check_replicas(const isph::Particles<Dim>& particles, long step);
+
+// Runs `write` on rank 0 only. If it throws while other ranks run, the message is printed and
+// MPI_Abort stops every rank (the snapshots written before stay complete); on one rank the
+// exception goes on to the caller as usual.
+void write_on_rank_zero(int rank, const std::function<void()>& write);
+
+}  // namespace isphdem
