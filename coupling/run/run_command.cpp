@@ -277,6 +277,15 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   if (rank == 0) fs::create_directories(args.out);
   LiggghtsBackend backend(dem.liggghts_args(args.out));
   backend.initialize({dem.script, {}});
+  // Run on without grains, the fluid alone would pass for a coupled result. Seen on 2 ranks:
+  // LIGGGHTS inserts into each processor's part of an insertion region, and a region that a
+  // processor boundary cuts into parts smaller than the grain stays empty (a warning only).
+  if (backend.state().atoms.empty())
+    throw CaseError("the LIGGGHTS script " + dem.script.string() +
+                    " created no grains (its screen output in " + args.out.string() +
+                    " says why): a coupled case needs grains. On several ranks, a small insertion "
+                    "region cut by a processor boundary stays empty: widen the region, or place "
+                    "the processor grid with the script's `processors` command");
   std::vector<std::string> auto_lines;
   const CaseFile c = [&] {
     if (!choose) return given;
@@ -427,8 +436,10 @@ int run_main(int argc, char** argv) {
   std::unique_ptr<RunReport> report;  // once the case is loaded: result.json at the end
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  auto fail = [&](const std::exception& e) {
-    std::fprintf(stderr, "isphdem run: %s\n", e.what());
+  // Case and simulation errors arise alike on every rank (each reads the same case and steps the
+  // same fluid): rank 0 says it. Others may be one rank's own and are said where they arise.
+  auto fail = [&](const std::exception& e, bool every_rank_alike = false) {
+    if (!every_rank_alike || rank == 0) std::fprintf(stderr, "isphdem run: %s\n", e.what());
     if (report && rank == 0) {
       report->error(e.what());
       try {
@@ -461,9 +472,9 @@ int run_main(int argc, char** argv) {
     if (rank == 0) report->finish(!args.quiet);
     return rc;
   } catch (const CaseError& e) {
-    return fail(e);
+    return fail(e, true);
   } catch (const isph::SimulationError& e) {
-    return fail(e);
+    return fail(e, true);
   } catch (const std::runtime_error& e) {  // DEM backend: missing script, refused loads
     return fail(e);
   } catch (const std::exception& e) {  // a scene the solver refuses (std::invalid_argument)

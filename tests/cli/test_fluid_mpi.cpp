@@ -11,80 +11,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <numeric>
 
-#include "../output/h5_read.hpp"
-#include "cli_support.hpp"
+#include "mpi_support.hpp"
 
 namespace isphdem::cli {
 namespace {
-
-// 2 in the default suite; the slow variant sets 4.
-int ranks() {
-  const char* n = std::getenv("ISPHDEM_MPI_RANKS");
-  return n ? std::atoi(n) : 2;
-}
-
-// Open MPI refuses root unless told (CI runs as root on 2 cores): set here, in the harness only.
-Result mpirun_run(int np, const std::string& args) {
-  return run_shell(
-      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1 mpirun "
-      "--oversubscribe -np " +
-      std::to_string(np) + " " + isphdem() + " run " + args);
-}
-
-struct Fields {
-  int dim = 0;
-  std::vector<double> x, v, p;  // sorted by particle id
-};
-
-std::filesystem::path last_snapshot(const std::filesystem::path& dir) {
-  std::vector<std::filesystem::path> snaps;
-  for (const auto& e : std::filesystem::directory_iterator(dir))
-    if (e.path().filename().string().rfind("snap_", 0) == 0) snaps.push_back(e.path());
-  std::sort(snaps.begin(), snaps.end());
-  return snaps.empty() ? std::filesystem::path() : snaps.back();
-}
-
-Fields read_fields(const std::filesystem::path& file) {
-  h5_read::File f(file.string());
-  const auto id = f.read("fluid/id");
-  const auto x = f.read("fluid/position"), v = f.read("fluid/velocity"),
-             p = f.read("fluid/pressure");
-  const std::size_t n = id.i64.size();
-  std::vector<std::size_t> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return id.i64[a] < id.i64[b]; });
-  Fields out;
-  out.dim = static_cast<int>(x.dims.at(1));
-  for (const auto k : order) {
-    for (int d = 0; d < out.dim; ++d) {
-      out.x.push_back(x.f64[k * out.dim + d]);
-      out.v.push_back(v.f64[k * out.dim + d]);
-    }
-    out.p.push_back(p.f64[k]);
-  }
-  return out;
-}
-
-double max_difference(const std::vector<double>& a, const std::vector<double>& b,
-                      double period = 0.0) {
-  EXPECT_EQ(a.size(), b.size());
-  double worst = 0.0;
-  for (std::size_t k = 0; k < std::min(a.size(), b.size()); ++k) {
-    double d = a[k] - b[k];
-    if (period > 0.0) d -= period * std::round(d / period);  // a particle wrapped in one run only
-    worst = std::max(worst, std::abs(d));
-  }
-  return worst;
-}
-
-double max_abs(const std::vector<double>& a) {
-  double m = 0.0;
-  for (const double x : a) m = std::max(m, std::abs(x));
-  return m;
-}
 
 // Runs CASE with ARGS on one rank and on ranks(), and compares their last snapshots.
 void expect_same_as_one_rank(const std::string& name, const std::string& args, double dx,
