@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# MPI ranks against OpenMP threads (issue 26), on this machine's 2 cores: each case run as
+# 1 rank x 1 thread, 2 ranks x 1 thread (mpirun) and 1 rank x 2 threads, PPE with amg, one run
+# each in one go, same binary. Today only the pressure equation is shared between ranks (one
+# PETSc system); the rest of a step is replicated on every rank (docs/parallel.md), so the
+# ranks' gain is bounded by the PPE's share of a step.
+# Parsed from the summary of `isphdem run`: wall time, particle-steps/s, PPE iterations per step,
+# the PPE's setup and iteration ms per step, and the wall time per simulated second.
+# Writes results.csv and results.md next to this script. Waits for a quiet machine before each
+# run (bench/quiet_machine.sh).
+#
+# usage: bench/mpi/run_ranks.sh [ISPHDEM] [WORKDIR]
+#   env: RUNS="case.toml:spacing:t_end:dt ..." (spacing/dt "-": the case's own)
+#        LAYOUTS="1x1 2x1 1x2" (ranks x threads)   LOAD_MAX=0.7   LOAD_WAIT=300
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+work=${2:-/tmp/bench_mpi}
+# Taylor-Green at 40k and 160k particles at its viscous limit 0.125 dx^2 / nu (20 and 10 steps),
+# the 2D dam break's first 0.05 s (automatic step), the closed internal-erosion tank (coupled,
+# semi-resolved, LIGGGHTS on the same ranks) for 0.05 s.
+RUNS=${RUNS:-"taylor_green_2d/case.toml:0.005:6.25e-3:3.125e-4
+  taylor_green_2d/case.toml:0.0025:7.8125e-4:7.8125e-5
+  dam_break_2d/case.toml:-:0.05:-
+  internal_erosion_2d/closed.toml:-:0.05:-"}
+LAYOUTS=${LAYOUTS:-"1x1 2x1 1x2"}
+LOAD_MAX=${LOAD_MAX:-0.7}
+LOAD_WAIT=${LOAD_WAIT:-300}
+
+source "$here/../isphdem_binary.sh"
+isphdem=$(isphdem_binary "$root" "${1:-}")
+mkdir -p "$work"
+source "$here/../quiet_machine.sh"
+
+csv=$here/results.csv
+echo "case,particles,ranks,threads,sim_time,steps,wall_s,wall_per_sim_s,particle_steps_per_s,ppe_it_per_step,setup_ms_per_step,iterate_ms_per_step,load1" >"$csv"
+for r in $RUNS; do
+  IFS=: read -r case dx t_end dt <<<"$r"
+  sets=(--set time.end="$t_end" --set output.interval=1e9 --set solver.preconditioner='"amg"')
+  [[ $dx != - ]] && sets+=(--set particles.spacing="$dx")
+  [[ $dt != - ]] && sets+=(--set time.dt="$dt")
+  for layout in $LAYOUTS; do
+    ranks=${layout%x*} threads=${layout#*x}
+    out=$work/$(echo "$case" | tr / _)_${dx}_$layout
+    log=$out.log
+    load=$(wait_quiet)
+    echo "$case dx=$dx t_end=$t_end ranks=$ranks threads=$threads load=$load" >&2
+    # Open MPI refuses root unless told: set for this script's own runs only.
+    OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=$threads \
+      mpirun --oversubscribe --bind-to none -np "$ranks" "$isphdem" run "$root/examples/$case" \
+      --out "$out" "${sets[@]}" >"$log" 2>&1 || { tail -5 "$log" >&2; exit 1; }
+    /usr/bin/python3 - "$log" "$case" "$ranks" "$threads" "$load" "$t_end" "$out/result.json" \
+      >>"$csv" <<'PY'
+import json, re, sys
+log, case, ranks, threads, load, t_end, result = sys.argv[1:]
+text = open(log).read()
+m = re.search(r"particles: (\d+) fluid, (\d+) wall", text) or \
+    re.search(r"fluid: (\d+) fluid, (\d+) wall particles", text)
+n = int(m[1]) + int(m[2])
+steps = int(re.search(r"in (\d+) (?:fluid )?steps", text)[1])
+wall = json.load(open(result))["wall_seconds"]  # the summary line rounds it
+its = float(re.search(r"([\d.]+) PPE iterations/step", text)[1])
+setup, iterate = map(float, re.search(r"setup ([\d.e+]+) ms/step, iterations ([\d.e+]+) ms/step",
+                                      text).groups())
+t = float(t_end)
+print(f"{case},{n},{ranks},{threads},{t},{steps},{wall:.4g},{wall / t:.4g},"
+      f"{n * steps / wall:.4g},{its},{setup:.4g},{iterate:.4g},{load}")
+PY
+    tail -1 "$csv" >&2
+  done
+done
+
+{
+  echo "Ranks against threads, isphdem run, $(date -u +%Y-%m-%d), $(nproc) cores" \
+       "($(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1)), PPE amg"
+  echo
+  echo "| case | particles | ranks × threads | steps | wall (s) | wall per simulated s | speed-up vs 1×1 | particle-steps/s | PPE it/step | PPE setup ms/step | PPE iterations ms/step | load before |"
+  echo "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+  /usr/bin/python3 - "$csv" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+base = {}
+for r in rows:
+    key = (r["case"], r["particles"])
+    if r["ranks"] == "1" and r["threads"] == "1":
+        base[key] = float(r["wall_s"])
+for r in rows:
+    b = base.get((r["case"], r["particles"]))
+    up = f"{b / float(r['wall_s']):.2f}" if b else ""
+    print(f"| {r['case']} | {r['particles']} | {r['ranks']} × {r['threads']} | {r['steps']} | "
+          f"{r['wall_s']} | {r['wall_per_sim_s']} | {up} | {r['particle_steps_per_s']} | "
+          f"{r['ppe_it_per_step']} | {r['setup_ms_per_step']} | {r['iterate_ms_per_step']} | "
+          f"{r['load1']} |")
+PY
+} >"$here/results.md"
+cat "$here/results.md"
