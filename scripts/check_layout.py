@@ -22,6 +22,7 @@ import tempfile
 ALLOWED = {
     "sph": set(),  # the ISPH library: no coupling, no LIGGGHTS, no MPI
     "sph_petsc": {"sph", "PETSc", "MPI"},  # the PPE on PETSc + hypre, registered with sph/
+    "sph_mpi": {"sph", "MPI"},  # the fluid decomposed over MPI ranks: RCB, migration, halo
     "liggghts_fix": {"LIGGGHTS", "MPI"},
     "coupling": {"sph"},  # the seam: DemState and the CouplingStage interface
     "case": {"sph"},
@@ -49,7 +50,7 @@ def room_of(root, path):
 
 
 def sources(root):
-    for top in ("sph", "sph_petsc", "liggghts_fix", "coupling"):
+    for top in ("sph", "sph_petsc", "sph_mpi", "liggghts_fix", "coupling"):
         for d, _, files in os.walk(os.path.join(root, top)):
             for f in sorted(files):
                 if f.endswith(SOURCE):
@@ -68,7 +69,8 @@ def resolve(root, path, bracket, name, liggghts_headers):
     if first in COUPLING_ROOMS and os.path.exists(os.path.join(root, "coupling", name)):
         return first
     for d in (os.path.dirname(path), os.path.join(root, "sph"), os.path.join(root, "sph_petsc"),
-              os.path.join(root, "coupling"), os.path.join(root, "liggghts_fix")):
+              os.path.join(root, "sph_mpi"), os.path.join(root, "coupling"),
+              os.path.join(root, "liggghts_fix")):
         candidate = os.path.join(d, name)
         if os.path.exists(candidate):
             return room_of(root, candidate)
