@@ -34,8 +34,9 @@ void check_replicas(const isph::Particles<Dim>& P, long step) {
   throw isph::SimulationError(
       "the ranks' copies of the fluid differ at step " + std::to_string(step) + " (" + what[k] +
           " from " + isph::format_number(lo[k], 17) + " to " + isph::format_number(hi[k], 17) +
-          "): every rank must step the fluid alike; run all ranks with the same "
-          "OMP_NUM_THREADS, or on one rank",
+          "): every rank must hold the same case and step the fluid alike (they do with any "
+          "OMP_NUM_THREADS); if they ran one case, this is a bug of isphdem: run on one rank "
+          "and report it",
       "replicas");
 }
 

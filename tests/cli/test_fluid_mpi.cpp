@@ -94,5 +94,21 @@ TEST(FluidMpi, UnstableRunStopsEveryRankWithOneMessage) {
   EXPECT_NE(result.find("\"status\": \"stopped\""), std::string::npos) << result;
 }
 
+TEST(FluidMpi, RanksWithDifferentCasesStop) {
+  // mpirun's "a : b" form gives each rank its own command line: here the vortex starts with
+  // amplitude 1 on rank 0 and 1.001 on rank 1. The copies differ from the first snapshot on.
+  const auto dir = scratch("fluid_mpi_different_cases");
+  const std::string run = " " + isphdem() + " run " + example("taylor_green_2d") + " --out " +
+                          (dir / "out").string() + " --set time.end=0.01 --set initial.amplitude=";
+  const Result r = run_shell(
+      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1 mpirun "
+      "--oversubscribe -np 1" +
+      run + "1.0 : -np 1" + run + "1.001");
+  std::printf("%s", r.output.c_str());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(count(r.output, "the ranks' copies of the fluid differ at step 0"), 1);
+  EXPECT_EQ(count_snapshots(dir / "out"), 0);
+}
+
 }  // namespace
 }  // namespace isphdem::cli
