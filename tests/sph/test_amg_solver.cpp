@@ -2,7 +2,11 @@
 // pressures to solver tolerance, on the manufactured-solution problem of
 // test_pressure_equation.cpp (disordered particles, fitted Laplacian, Dirichlet band), with
 // flat iteration counts under refinement; a bad PETSc option stops with PETSc's message.
+// The same tests run on one rank and under mpirun -np 2 (amg_solver_np2): there every rank
+// passes the same system, the ranks solve it as one distributed MPIAIJ system, and each must get
+// back the whole pressure, bit for bit the same on every rank.
 #include <gtest/gtest.h>
+#include <mpi.h>
 
 #include <cstdlib>
 
@@ -21,6 +25,21 @@ LinearSolverConfig config(const std::string& preconditioner, double tolerance = 
   return c;
 }
 
+int ranks() {
+  int n = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &n);
+  return n;
+}
+
+// Largest |x - x on rank 0| over every rank and row (0 on one rank).
+double spread_over_ranks(const Eigen::VectorXd& x) {
+  Eigen::VectorXd root = x;
+  MPI_Bcast(root.data(), static_cast<int>(root.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  double d = (x - root).cwiseAbs().maxCoeff();
+  MPI_Allreduce(MPI_IN_PLACE, &d, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  return d;
+}
+
 TEST(AmgSolver, SamePressureAsEigenToSolverTolerance) {
   ManufacturedSystem m(0.02);
   const int n = static_cast<int>(m.p.size());
@@ -35,11 +54,13 @@ TEST(AmgSolver, SamePressureAsEigenToSolverTolerance) {
   const double diff = (amg - eigen).cwiseAbs().maxCoeff() / eigen.cwiseAbs().maxCoeff();
   double err = 0;
   for (int i = 0; i < n; ++i) err = std::max(err, std::abs(amg[i] - exact_p(m.p.x[i])));
+  const double spread = spread_over_ranks(amg);
   std::printf(
-      "N = %d: ilu0 %d iterations, amg %d; max |p_amg - p_ilu0| / max |p| = %.2e, "
-      "amg error against the exact solution %.3e\n",
-      n, se.iterations, sa.iterations, diff, err);
+      "%d rank(s), N = %d: ilu0 %d iterations, amg %d; max |p_amg - p_ilu0| / max |p| = %.2e, "
+      "amg error against the exact solution %.3e; largest difference between ranks %.1e\n",
+      ranks(), n, se.iterations, sa.iterations, diff, err, spread);
   EXPECT_LT(diff, 1e-7);
+  EXPECT_EQ(spread, 0.0);
   EXPECT_LT(sa.iterations, se.iterations);
 }
 
@@ -50,8 +71,8 @@ TEST(AmgSolver, IterationsStayFlatUnderRefinement) {
     Eigen::VectorXd x = Eigen::VectorXd::Zero(m.p.size());
     const SolveStats s = make_linear_solver(config("amg", 1e-8))->solve(m.sys.A, m.sys.b, x);
     ASSERT_TRUE(s.converged) << s.reason;
-    std::printf("dx = %g: N = %zu, %d BiCGSTAB + BoomerAMG iterations\n", dx, m.p.size(),
-                s.iterations);
+    std::printf("%d rank(s), dx = %g: N = %zu, %d BiCGSTAB + BoomerAMG iterations\n", ranks(), dx,
+                m.p.size(), s.iterations);
     its.push_back(s.iterations);
   }
   // 16x the unknowns; Jacobi-BiCGSTAB needs about 4x the iterations over that range.
@@ -78,6 +99,7 @@ TEST(AmgSolver, ReusedSetupAndChangedValuesGiveTheNewSolution) {
   EXPECT_EQ(second.setup_seconds, 0.0);  // no new setup
   EXPECT_LE((m.sys.b - A2 * x2).norm(), 1.01e-10 * m.sys.b.norm());
   EXPECT_GT((x2 - x).norm(), 1e-6 * x.norm());  // it did solve the changed system
+  EXPECT_EQ(spread_over_ranks(x2), 0.0);
   // Another size (particles added or removed): a new matrix and hierarchy.
   ManufacturedSystem finer(0.015);
   Eigen::VectorXd x3 = Eigen::VectorXd::Zero(finer.p.size());
@@ -85,6 +107,7 @@ TEST(AmgSolver, ReusedSetupAndChangedValuesGiveTheNewSolution) {
   ASSERT_TRUE(third.converged) << third.reason;
   EXPECT_GT(third.setup_seconds, 0.0);
   EXPECT_LE((finer.sys.b - finer.sys.A * x3).norm(), 1.01e-10 * finer.sys.b.norm());
+  EXPECT_EQ(spread_over_ranks(x3), 0.0);
 }
 
 TEST(AmgSolver, TooFewIterationsReportPetscsReason) {
