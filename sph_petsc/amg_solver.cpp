@@ -183,9 +183,8 @@ class AmgSolver : public LinearSolver {
   // convention. With the mixed signs the 2D dam break stalled in the PPE.
   void load_matrix(const SparseMatrix& A) {
     const int n = static_cast<int>(A.rows());
-    first_ = static_cast<int>(static_cast<long>(n) * rank_ / ranks_);
-    const int last = static_cast<int>(static_cast<long>(n) * (rank_ + 1) / ranks_);
-    const int m = last - first_;
+    first_ = block_start(n, rank_);
+    const int m = block_start(n, rank_ + 1) - first_;
     const int* outer = A.outerIndexPtr() + first_;
     const int* inner = A.innerIndexPtr() + outer[0];
     const double* v = A.valuePtr() + outer[0];
@@ -247,13 +246,18 @@ class AmgSolver : public LinearSolver {
     check_petsc(MatSeqAIJRestoreArray(mat_.h, &values), "updating the matrix");
   }
 
+  // The first row of rank r's block of n rows (r = ranks_: n).
+  int block_start(int n, int r) const {
+    return static_cast<int>(static_cast<long>(n) * r / ranks_);
+  }
+
   // Every rank's block of x to every rank.
   void gather_blocks(Eigen::VectorXd& x) const {
-    const long n = x.size();
+    const int n = static_cast<int>(x.size());
     std::vector<int> counts(ranks_), starts(ranks_);
     for (int r = 0; r < ranks_; ++r) {
-      starts[r] = static_cast<int>(n * r / ranks_);
-      counts[r] = static_cast<int>(n * (r + 1) / ranks_) - starts[r];
+      starts[r] = block_start(n, r);
+      counts[r] = block_start(n, r + 1) - starts[r];
     }
     // MPI's default error handler aborts every rank on failure: nothing to check here.
     MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, x.data(), counts.data(), starts.data(),
