@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <numeric>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "../output/h5_read.hpp"
@@ -27,11 +28,6 @@ inline Result mpirun_run(int np, const std::string& args) {
       std::to_string(np) + " " + isphdem() + " run " + args);
 }
 
-struct Fields {
-  int dim = 0;
-  std::vector<double> x, v, p;  // sorted by particle id
-};
-
 inline std::filesystem::path last_snapshot(const std::filesystem::path& dir) {
   std::vector<std::filesystem::path> snaps;
   for (const auto& e : std::filesystem::directory_iterator(dir))
@@ -39,6 +35,27 @@ inline std::filesystem::path last_snapshot(const std::filesystem::path& dir) {
   std::sort(snaps.begin(), snaps.end());
   return snaps.empty() ? std::filesystem::path() : snaps.back();
 }
+
+// The example NAME run with ARGS on one rank and on ranks(), into scratch(SCRATCH)/np1 and /npN,
+// with the pressure solved over the ranks (amg) to 1e-10; returns the two runs' last snapshots.
+// A run that fails is a test failure (callers stop on ::testing::Test::HasFailure()).
+inline std::pair<std::filesystem::path, std::filesystem::path> run_on_one_and_many(
+    const std::string& scratch_name, const std::string& name, const std::string& args) {
+  const auto dir = scratch(scratch_name);
+  const std::string tight =
+      " --quiet --set solver.preconditioner=amg --set solver.pressure_tolerance=1e-10 ";
+  for (const auto& [np, sub] : {std::pair{1, "np1"}, std::pair{ranks(), "npN"}}) {
+    const Result r =
+        mpirun_run(np, example(name) + " --out " + (dir / sub).string() + tight + args);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+  }
+  return {last_snapshot(dir / "np1"), last_snapshot(dir / "npN")};
+}
+
+struct Fields {
+  int dim = 0;
+  std::vector<double> x, v, p;  // sorted by particle id
+};
 
 // The group's (fluid, dem, bodies) positions, velocities and, for the fluid, pressures, sorted
 // by id.

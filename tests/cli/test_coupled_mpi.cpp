@@ -9,25 +9,10 @@
 namespace isphdem::cli {
 namespace {
 
-const std::string kTight =
-    " --quiet --set solver.preconditioner=amg"
-    " --set solver.pressure_tolerance=1e-10";
-
-// The last snapshots of the example run on one rank and on ranks().
-std::pair<std::filesystem::path, std::filesystem::path> run_both(const std::string& name,
-                                                                 const std::string& args) {
-  const auto dir = scratch("coupled_mpi_" + name);
-  for (const auto& [np, sub] : {std::pair{1, "np1"}, std::pair{ranks(), "npN"}}) {
-    const Result r =
-        mpirun_run(np, example(name) + " --out " + (dir / sub).string() + kTight + " " + args);
-    EXPECT_EQ(r.exit_code, 0) << r.output;
-  }
-  return {last_snapshot(dir / "np1"), last_snapshot(dir / "npN")};
-}
-
 TEST(CoupledMpi, SettlingGrainFollowsTheOneRankTrajectory) {
   // Unresolved: one fine grain settling at its terminal speed (0.15 m/s) after 0.1 s.
-  const auto [a_file, b_file] = run_both("settling_grain", "--set time.end=0.1");
+  const auto [a_file, b_file] =
+      run_on_one_and_many("coupled_mpi_settling_grain", "settling_grain", "--set time.end=0.1");
   ASSERT_EQ(a_file.filename(), b_file.filename());
   const Fields a = read_fields(a_file, "dem"), b = read_fields(b_file, "dem");
   ASSERT_EQ(a.x.size(), b.x.size());
@@ -42,7 +27,8 @@ TEST(CoupledMpi, SettlingGrainFollowsTheOneRankTrajectory) {
 
 TEST(CoupledMpi, BuoyancyClumpTakesTheOneRankLoad) {
   // Resolved: the held clump's hydrodynamic force is its buoyancy, 9.759e-5 N.
-  const auto [a_file, b_file] = run_both("buoyancy_clump", "--set time.end=0.05");
+  const auto [a_file, b_file] =
+      run_on_one_and_many("coupled_mpi_buoyancy_clump", "buoyancy_clump", "--set time.end=0.05");
   ASSERT_EQ(a_file.filename(), b_file.filename());
   h5_read::File a(a_file.string()), b(b_file.string());
   const auto fa = a.read("bodies/force_hydro").f64, fb = b.read("bodies/force_hydro").f64;

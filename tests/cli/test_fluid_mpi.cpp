@@ -20,17 +20,8 @@ namespace {
 // Runs CASE with ARGS on one rank and on ranks(), and compares their last snapshots.
 void expect_same_as_one_rank(const std::string& name, const std::string& args, double dx,
                              double speed, double period) {
-  const auto dir = scratch("fluid_mpi_" + name);
-  const std::string tight =
-      " --quiet --set solver.preconditioner=amg"
-      " --set solver.pressure_tolerance=1e-10 " +
-      args;
-  const Result one = mpirun_run(1, example(name) + " --out " + (dir / "np1").string() + tight);
-  ASSERT_EQ(one.exit_code, 0) << one.output;
-  const Result many =
-      mpirun_run(ranks(), example(name) + " --out " + (dir / "npN").string() + tight);
-  ASSERT_EQ(many.exit_code, 0) << many.output;
-  const auto a_file = last_snapshot(dir / "np1"), b_file = last_snapshot(dir / "npN");
+  const auto [a_file, b_file] = run_on_one_and_many("fluid_mpi_" + name, name, args);
+  ASSERT_FALSE(::testing::Test::HasFailure());
   ASSERT_EQ(a_file.filename(), b_file.filename()) << "the runs took different steps";
   const Fields a = read_fields(a_file), b = read_fields(b_file);
   ASSERT_EQ(a.p.size(), b.p.size());
