@@ -71,6 +71,11 @@ void IsphSolver<Dim>::update_forcing_kinds() {
 template <int Dim>
 StepStats IsphSolver<Dim>::step(double dt) {
   if (!(dt > 0.0) || !std::isfinite(dt)) throw SimulationError("time step must be positive");
+  const int n = static_cast<int>(particles_.size());
+  blocked_ = share_->parts() > 1 && linear_solver_->distributed_rows() &&
+             unit_solver_->distributed_rows() && particles_.count(kSolid) == 0;
+  first_ = blocked_ ? share_->first(n) : 0;
+  last_ = blocked_ ? share_->last(n) : n;
   update_forcing_kinds();
   find_neighbors();  // the pair geometry and weights every stage below reuses
   {
@@ -136,6 +141,9 @@ std::string IsphSolver<Dim>::describe_fastest() const {
     if (P.kind[i] != kWall && P.kind[i] != kSolid && (fast < 0 || P.v[i].norm() > P.v[fast].norm()))
       fast = i;
   if (fast < 0) return "no moving particle";
+  if (fast < first_ || fast >= last_)  // its neighbour list was built by another process
+    return std::string("the fastest is particle ") + std::to_string(P.id[fast]) + " at " +
+           format_vector(P.x[fast]) + " m (" + format_number(P.v[fast].norm(), 4) + " m/s)";
   // The neighbour list is the step's own (built before the particles moved): what the fastest
   // particle's equations saw. A fluid particle whose support is mostly solid sits in a pocket
   // between bodies (the semi-resolved erosion runs broke up from one).

@@ -24,7 +24,9 @@
 #include "particles.hpp"
 #include "porous_medium.hpp"
 #include "pressure_equation.hpp"
+#include "row_share.hpp"
 #include "shifting.hpp"
+#include "stopwatch.hpp"
 #include "time_step.hpp"
 
 namespace isph {
@@ -108,6 +110,8 @@ class SimulationError : public std::runtime_error {
 struct StepTimings {
   double neighbors = 0, operators = 0, assembly = 0, solve = 0, rest = 0;
   double solve_setup = 0;  // the preconditioner setup inside `solve` (not a part of its own)
+  // Exchanging rows between processes (sph/row_share.hpp), inside the stages' times above.
+  double exchange = 0;
   double total() const { return neighbors + operators + assembly + solve + rest; }
 };
 
@@ -147,6 +151,15 @@ class IsphSolver {
   const PorousMedium<Dim>& porous() const { return porous_; }
   // Body acceleration for the coming steps (a flow-rate drive adjusts it between steps).
   void set_gravity(const Vec<Dim>& g) { config_.gravity = g; }
+  // Shares the rows of every step between the processes of `share` (sph/row_share.hpp). Takes
+  // effect in the steps where the pressure solver is distributed over the same processes and no
+  // PMS solid is present; other steps compute every row on every process, as before.
+  void share_rows(std::shared_ptr<const RowShare> share) { share_ = std::move(share); }
+  // grad p of the last step at the given rows (storage order), on every process: with shared
+  // rows only the process that computed a row holds its neighbour list (neighbors()).
+  std::vector<Vec<Dim>> pressure_gradient_at(const std::vector<int>& rows) const;
+  // Whether the last step was computed in shared blocks of rows.
+  bool rows_shared() const { return blocked_; }
 
  private:
   // The stages of step(), in order, each in the file named.
@@ -171,6 +184,14 @@ class IsphSolver {
   std::string describe_fastest() const;
   void check_state(const char* where) const;
   void check_cfl(double dt, const StepStats& stats) const;
+  // After a stage whose rows another row's stage reads: every process gets every row.
+  template <class T>
+  void exchange(std::vector<T>& rows) {
+    if (!blocked_) return;
+    Stopwatch w(timings_.exchange);
+    share_->exchange(rows);
+  }
+  const RowShare* block_share() const { return blocked_ ? share_.get() : nullptr; }
 
   IsphConfig<Dim> config_;
   Domain<Dim> domain_;
@@ -179,6 +200,9 @@ class IsphSolver {
   NeighborSearch<Dim> search_;
   std::unique_ptr<LinearSolver> linear_solver_;
   std::unique_ptr<LinearSolver> unit_solver_;  // for spread_pinned_source's q (its own setup)
+  std::shared_ptr<const RowShare> share_ = std::make_shared<RowShare>();
+  bool blocked_ = false;      // this step's rows are shared (share_rows)
+  int first_ = 0, last_ = 0;  // the rows this process computes in this step
   double n0_ = 0.0;
   double time_ = 0.0;
   long steps_ = 0;

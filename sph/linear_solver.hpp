@@ -46,6 +46,9 @@ class LinearSolver {
   // norm of a right-hand side of physical size (0: |b| alone).
   virtual SolveStats solve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                            double reference = 0.0) = 0;
+  // True when this process solves only its block of rows (block_start of sph/row_share.hpp) and
+  // reads no other rows of A and b; x is still returned whole.
+  virtual bool distributed_rows() const { return false; }
 };
 
 using LinearSolverFactory = std::function<std::unique_ptr<LinearSolver>(const LinearSolverConfig&)>;

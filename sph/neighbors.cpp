@@ -83,9 +83,10 @@ std::vector<int> NeighborSearch<Dim>::sort(Particles<Dim>& particles) {
 
 template <int Dim>
 void NeighborSearch<Dim>::build(const Particles<Dim>& particles, const Kernel<Dim>& kernel,
-                                Neighbors<Dim>& out) {
+                                Neighbors<Dim>& out, int first, int last) {
   make_grid(particles);
   const int n = static_cast<int>(particles.size());
+  if (last < 0) last = n;
   const double rc2 = cutoff_ * cutoff_;
 
   // Visits every j within the cutoff of i (excluding i) with the minimum-image separation.
@@ -126,7 +127,7 @@ void NeighborSearch<Dim>::build(const Particles<Dim>& particles, const Kernel<Di
 
   out.offset.assign(n + 1, 0);
 #pragma omp parallel for schedule(static)
-  for (int i = 0; i < n; ++i) {
+  for (int i = first; i < last; ++i) {
     int count = 0;
     visit(i, [&](int, const Vec<Dim>&, double) { ++count; });
     out.offset[i + 1] = count;
@@ -140,7 +141,7 @@ void NeighborSearch<Dim>::build(const Particles<Dim>& particles, const Kernel<Di
   out.dw.resize(m);
   out.w_self = kernel.value(0.0);
 #pragma omp parallel for schedule(static)
-  for (int i = 0; i < n; ++i) {
+  for (int i = first; i < last; ++i) {
     int k = out.offset[i];
     visit(i, [&](int j, const Vec<Dim>& d, double r2) {
       const double r = std::sqrt(r2);

@@ -35,8 +35,10 @@ class NeighborSearch {
   // Reorders all particle arrays by cell index (stable). Returns perm: new n holds old perm[n].
   std::vector<int> sort(Particles<Dim>& particles);
 
-  // Builds the full (i->j and j->i) neighbour list with pair geometry.
-  void build(const Particles<Dim>& particles, const Kernel<Dim>& kernel, Neighbors<Dim>& out);
+  // Builds the full (i->j and j->i) neighbour list with pair geometry, for the rows
+  // [first, last) (last < 0: to the end); other rows are left empty (sph/row_share.hpp).
+  void build(const Particles<Dim>& particles, const Kernel<Dim>& kernel, Neighbors<Dim>& out,
+             int first = 0, int last = -1);
 
   double cutoff() const { return cutoff_; }
 

@@ -7,7 +7,8 @@
 namespace isph {
 
 template <int Dim>
-void PorousMedium<Dim>::prepare(const Particles<Dim>& P, const Neighbors<Dim>& nb, double dt) {
+void PorousMedium<Dim>::prepare(const Particles<Dim>& P, const Neighbors<Dim>& nb, double dt,
+                                const RowShare* share) {
   const int n = static_cast<int>(P.size());
   active_ = false;
   for (int i = 0; i < n; ++i) {
@@ -42,6 +43,7 @@ void PorousMedium<Dim>::prepare(const Particles<Dim>& P, const Neighbors<Dim>& n
     }
     if (ws > 0.0) coefficient_[i] = cs / ws;
   }
+  if (share) share->exchange(coefficient_);  // the PPE's pair weights read the neighbours'
 }
 
 template <int Dim>

@@ -22,6 +22,7 @@
 
 #include "neighbors.hpp"
 #include "particles.hpp"
+#include "row_share.hpp"
 
 namespace isph {
 
@@ -36,7 +37,10 @@ class PorousMedium {
   // Checks eps and K, decides whether any porous term acts and computes c per particle (walls:
   // the Shepard average over fluid neighbours, so that their u* and their pairs in the PPE match
   // the fluid beside them). Throws std::invalid_argument naming the particle on bad data.
-  void prepare(const Particles<Dim>& P, const Neighbors<Dim>& nb, double dt);
+  // share: the rows are shared between processes (sph/row_share.hpp), the coefficients are
+  // exchanged once computed.
+  void prepare(const Particles<Dim>& P, const Neighbors<Dim>& nb, double dt,
+               const RowShare* share = nullptr);
 
   bool active() const { return active_; }
   // c_i (dimensionless; the PPE coefficient is c_i/rho).

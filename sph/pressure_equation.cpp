@@ -146,8 +146,8 @@ void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb
 }
 
 template <int Dim>
-double spread_pinned_source(const PressureSystem<Dim>& system, const Eigen::VectorXd& q,
-                            Eigen::VectorXd& p) {
+double pinned_lambda(const PressureSystem<Dim>& system, const Eigen::VectorXd& q,
+                     const Eigen::VectorXd& p) {
   if (system.pinned < 0 || system.pin_row.empty()) return 0.0;
   double r = system.pin_b, s = 1.0;
   for (const auto& [j, c] : system.pin_row) {
@@ -155,8 +155,14 @@ double spread_pinned_source(const PressureSystem<Dim>& system, const Eigen::Vect
     s -= c * q[j];
   }
   if (!(std::abs(s) > 1e-300)) return 0.0;
-  const double lambda = r / s;
-  p -= lambda * q;
+  return r / s;
+}
+
+template <int Dim>
+double spread_pinned_source(const PressureSystem<Dim>& system, const Eigen::VectorXd& q,
+                            Eigen::VectorXd& p) {
+  const double lambda = pinned_lambda(system, q, p);
+  if (lambda != 0.0) p -= lambda * q;
   return lambda;
 }
 
@@ -177,6 +183,10 @@ template double spread_pinned_source<2>(const PressureSystem<2>&, const Eigen::V
                                         Eigen::VectorXd&);
 template double spread_pinned_source<3>(const PressureSystem<3>&, const Eigen::VectorXd&,
                                         Eigen::VectorXd&);
+template double pinned_lambda<2>(const PressureSystem<2>&, const Eigen::VectorXd&,
+                                 const Eigen::VectorXd&);
+template double pinned_lambda<3>(const PressureSystem<3>&, const Eigen::VectorXd&,
+                                 const Eigen::VectorXd&);
 template Eigen::VectorXd uniform_source<2>(const Particles<2>&, const Operators<2>&,
                                            const PressureSystem<2>&);
 template Eigen::VectorXd uniform_source<3>(const Particles<3>&, const Operators<3>&,

@@ -45,6 +45,10 @@ struct PressureSystem {
 template <int Dim>
 double spread_pinned_source(const PressureSystem<Dim>& system, const Eigen::VectorXd& q,
                             Eigen::VectorXd& p);
+// lambda alone (p unchanged); needs the pinned row as assembled (pin_row).
+template <int Dim>
+double pinned_lambda(const PressureSystem<Dim>& system, const Eigen::VectorXd& q,
+                     const Eigen::VectorXd& p);
 
 // The right-hand side of that second solve: 1 in the interior rows, 0 in wall rows, the pin and
 // the rows of isolated particles (p = 0).

@@ -5,7 +5,8 @@ namespace isph {
 template <int Dim>
 void compute_shifts(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
                     const Kernel<Dim>& kernel, const ShiftingParams& params, double dt,
-                    const std::vector<uint8_t>& mode, std::vector<Vec<Dim>>& shift) {
+                    const std::vector<uint8_t>& mode, std::vector<Vec<Dim>>& shift,
+                    const RowShare* share) {
   const int n = static_cast<int>(particles.size());
   shift.assign(n, Vec<Dim>::Zero());
   if (!params.enabled) return;
@@ -26,6 +27,7 @@ void compute_shifts(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
     }
     grad_c[i] = particles.volume * g;
   }
+  if (share) share->exchange(grad_c);  // the surface normal below reads the neighbours'
 
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < n; ++i) {
@@ -49,42 +51,62 @@ void compute_shifts(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
 template <int Dim>
 void separate_close_pairs(Particles<Dim>& particles, const Neighbors<Dim>& nb,
                           const Domain<Dim>& domain, double dt, double min_distance,
-                          std::vector<Vec<Dim>>& shift) {
+                          std::vector<Vec<Dim>>& shift, const RowShare* share) {
   auto& P = particles;
   const int n = static_cast<int>(P.size());
+  auto end_gap = [&](int i, int j) {
+    return domain.min_image((P.x[i] + dt * P.v[i] + shift[i]) - (P.x[j] + dt * P.v[j] + shift[j]));
+  };
+  auto separate = [&](int i, int j) {
+    const Vec<Dim> d = end_gap(i, j);
+    const double r = d.norm();
+    if (r >= min_distance || !(r > 0.0)) return;
+    const Vec<Dim> e = d / r;
+    const double gap = 0.5 * (min_distance - r);
+    shift[i] += gap * e;
+    shift[j] -= gap * e;
+    const double vn = (P.v[i] - P.v[j]).dot(e);
+    if (vn < 0.0) {
+      P.v[i] -= 0.5 * vn * e;
+      P.v[j] += 0.5 * vn * e;
+    }
+  };
   // Serial: a particle may be in several close pairs, and each correction must see the last.
-  for (int i = 0; i < n; ++i) {
+  if (!share || share->parts() == 1) {
+    for (int i = 0; i < n; ++i) {
+      if (P.kind[i] != kFluid) continue;
+      for (int k = nb.begin(i); k < nb.end(i); ++k) {
+        const int j = nb.index[k];
+        if (j > i && P.kind[j] == kFluid) separate(i, j);
+      }
+    }
+    return;
+  }
+  std::vector<int> mine;  // pairs (i, j) in the serial sweep's order
+  for (int i = share->first(n); i < share->last(n); ++i) {
     if (P.kind[i] != kFluid) continue;
     for (int k = nb.begin(i); k < nb.end(i); ++k) {
       const int j = nb.index[k];
-      if (j <= i || P.kind[j] != kFluid) continue;
-      const Vec<Dim> d =
-          domain.min_image((P.x[i] + dt * P.v[i] + shift[i]) - (P.x[j] + dt * P.v[j] + shift[j]));
-      const double r = d.norm();
-      if (r >= min_distance || !(r > 0.0)) continue;
-      const Vec<Dim> e = d / r;
-      const double gap = 0.5 * (min_distance - r);
-      shift[i] += gap * e;
-      shift[j] -= gap * e;
-      const double vn = (P.v[i] - P.v[j]).dot(e);
-      if (vn < 0.0) {
-        P.v[i] -= 0.5 * vn * e;
-        P.v[j] += 0.5 * vn * e;
+      if (j > i && P.kind[j] == kFluid && end_gap(i, j).norm() < 2.0 * min_distance) {
+        mine.push_back(i);
+        mine.push_back(j);
       }
     }
   }
+  const std::vector<int> all = share->concatenate(mine);
+  for (std::size_t k = 0; k + 1 < all.size(); k += 2) separate(all[k], all[k + 1]);
 }
 
 template void separate_close_pairs<2>(Particles<2>&, const Neighbors<2>&, const Domain<2>&, double,
-                                      double, std::vector<Vec<2>>&);
+                                      double, std::vector<Vec<2>>&, const RowShare*);
 template void separate_close_pairs<3>(Particles<3>&, const Neighbors<3>&, const Domain<3>&, double,
-                                      double, std::vector<Vec<3>>&);
+                                      double, std::vector<Vec<3>>&, const RowShare*);
 
 template void compute_shifts<2>(const Particles<2>&, const Neighbors<2>&, const Kernel<2>&,
                                 const ShiftingParams&, double, const std::vector<uint8_t>&,
-                                std::vector<Vec<2>>&);
+                                std::vector<Vec<2>>&, const RowShare*);
 template void compute_shifts<3>(const Particles<3>&, const Neighbors<3>&, const Kernel<3>&,
                                 const ShiftingParams&, double, const std::vector<uint8_t>&,
-                                std::vector<Vec<3>>&);
+                                std::vector<Vec<3>>&, const RowShare*);
 
 }  // namespace isph

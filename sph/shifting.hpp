@@ -7,6 +7,7 @@
 
 #include "domain.hpp"
 #include "operators.hpp"
+#include "row_share.hpp"
 
 namespace isph {
 
@@ -24,7 +25,8 @@ struct ShiftingParams {
 template <int Dim>
 void compute_shifts(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
                     const Kernel<Dim>& kernel, const ShiftingParams& params, double dt,
-                    const std::vector<uint8_t>& mode, std::vector<Vec<Dim>>& shift);
+                    const std::vector<uint8_t>& mode, std::vector<Vec<Dim>>& shift,
+                    const RowShare* share = nullptr);
 
 // Keeps fluid particles at least `min_distance` apart at the end of the step (an inelastic
 // collision, as in MPS: Lee et al. 2011). Shifting is tangential or off at and next to the free
@@ -34,9 +36,13 @@ void compute_shifts(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
 // pair that would end closer than min_distance, both displacements (dt v + shift) are moved
 // apart symmetrically and the approaching part of the relative velocity is removed; momentum is
 // conserved. Pairs never come that close in smooth interior flow, so it acts at splashes only.
+// With shared rows (sph/row_share.hpp; x, v and shift whole on every process) each process
+// lists the pairs of its rows that end within twice min_distance, and every process runs the
+// one serial sweep over all processes' lists: the same result everywhere, and the one-process
+// result unless a correction carried a pair from beyond twice min_distance to within it.
 template <int Dim>
 void separate_close_pairs(Particles<Dim>& particles, const Neighbors<Dim>& nb,
                           const Domain<Dim>& domain, double dt, double min_distance,
-                          std::vector<Vec<Dim>>& shift);
+                          std::vector<Vec<Dim>>& shift, const RowShare* share = nullptr);
 
 }  // namespace isph

@@ -16,11 +16,10 @@ constexpr double kMinPairDistance = 0.5;
 
 template <int Dim>
 void IsphSolver<Dim>::correct(double dt) {
-  const int n = static_cast<int>(particles_.size());
   auto& P = particles_;
   const double rho0 = config_.density;
 #pragma omp parallel for schedule(static)
-  for (int i = 0; i < n; ++i) {
+  for (int i = first_; i < last_; ++i) {
     if (P.kind[i] == kWall) continue;
     if (P.kind[i] == kForcing) {  // the pump: the zone velocity whatever the pressure
       P.v[i] = zone_of(P.x[i])->velocity_at(time_ + dt);
@@ -32,24 +31,43 @@ void IsphSolver<Dim>::correct(double dt) {
     }
     P.v[i] = u_star_[i] - dt * porous_.pressure_coefficient(i) / rho0 * gradient(nb_, op_, P.p, i);
   }
+  exchange(P.v);  // (no PMS solids when rows are shared: their forces stay where computed)
+}
+
+template <int Dim>
+std::vector<Vec<Dim>> IsphSolver<Dim>::pressure_gradient_at(const std::vector<int>& rows) const {
+  std::vector<Vec<Dim>> g(rows.size(), Vec<Dim>::Zero());
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    if (rows[r] >= first_ && rows[r] < last_) g[r] = gradient(nb_, op_, particles_.p, rows[r]);
+  // One process contributes each row, the others zero: the sum is exact.
+  if (blocked_ && !g.empty()) share_->sum_in_place(g[0].data(), Dim * g.size());
+  return g;
 }
 
 template <int Dim>
 void IsphSolver<Dim>::advect(double dt, StepStats& stats) {
-  const int n = static_cast<int>(particles_.size());
   auto& P = particles_;
   if (config_.free_surface)
-    separate_close_pairs(P, nb_, domain_, dt, kMinPairDistance * P.spacing, shift_);
-  double vmax = 0.0;
-  for (int i = 0; i < n; ++i) {
+    separate_close_pairs(P, nb_, domain_, dt, kMinPairDistance * P.spacing, shift_, block_share());
+  double vmax = 0.0, surface = 0.0, volume = 0.0;
+  for (int i = first_; i < last_; ++i) {
     if (P.kind[i] == kWall || P.kind[i] == kSolid) continue;  // solids: placed by their body
     P.x[i] += dt * P.v[i] + shift_[i];
     keep_off_walls(i);
     domain_.wrap(P.x[i]);
     vmax = std::max(vmax, P.v[i].norm());
-    stats.surface_particles += P.surface[i];
-    stats.fluid_volume += P.volume * (full_support_[i] ? n0_ / number_density_[i] : 1.0);
+    surface += P.surface[i];
+    volume += P.volume * (full_support_[i] ? n0_ / number_density_[i] : 1.0);
   }
+  exchange(P.x);
+  exchange(P.v);
+  if (blocked_) {
+    vmax = share_->max(vmax);
+    surface = share_->sum(surface);
+    volume = share_->sum(volume);
+  }
+  stats.surface_particles = static_cast<std::size_t>(surface);
+  stats.fluid_volume = volume;
   stats.max_speed = vmax;
   stats.max_eddy_viscosity = max_eddy_viscosity_;
 }
@@ -79,6 +97,8 @@ void IsphSolver<Dim>::keep_off_walls(int i) {
   }
 }
 
+template std::vector<Vec<2>> IsphSolver<2>::pressure_gradient_at(const std::vector<int>&) const;
+template std::vector<Vec<3>> IsphSolver<3>::pressure_gradient_at(const std::vector<int>&) const;
 template void IsphSolver<2>::correct(double);
 template void IsphSolver<2>::advect(double, StepStats&);
 template void IsphSolver<2>::keep_off_walls(int);

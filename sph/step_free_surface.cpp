@@ -25,11 +25,13 @@ void IsphSolver<Dim>::detect_free_surface() {
         dry_wall_.assign(particles_.size(), 0);
       const bool gravity = config_.gravity.squaredNorm() > 0.0;
       const Vec<Dim> up = gravity ? Vec<Dim>(-config_.gravity.normalized()) : Vec<Dim>::Zero();
+      exchange(dry_wall_);  // the scan ignores dry neighbours
       mark_open_side_as_surface(particles_, nb_, &dry_wall_, gravity ? &up : nullptr);
     }
   } else
     std::fill(particles_.surface.begin(), particles_.surface.end(), 0);
   if (config_.free_surface) mark_dry_solids(particles_, nb_, config_.gravity);
+  exchange(particles_.surface);
   surface_depth_.clear();
   if (config_.free_surface && config_.surface_refill && config_.gravity.squaredNorm() > 0.0)
     surface_depth(particles_, nb_, Vec<Dim>(-config_.gravity.normalized()), surface_depth_);
@@ -44,7 +46,7 @@ void IsphSolver<Dim>::mark_full_support() {
   // density-invariance term nor shifting may act on it.
   full_support_.assign(n, 0);
 #pragma omp parallel for schedule(static)
-  for (int i = 0; i < n; ++i) {
+  for (int i = first_; i < last_; ++i) {
     if (P.kind[i] == kWall || P.surface[i]) continue;
     bool near_surface = false;
     for (int k = nb_.begin(i); k < nb_.end(i) && !near_surface; ++k)

@@ -14,7 +14,7 @@ void IsphSolver<Dim>::find_neighbors() {
     for (std::size_t k = 0; k < perm.size(); ++k) q[k] = unit_response_[perm[k]];
     unit_response_.swap(q);
   }
-  search_.build(particles_, kernel_, nb_);
+  search_.build(particles_, kernel_, nb_, first_, last_);
 }
 
 template <int Dim>
@@ -28,6 +28,7 @@ void IsphSolver<Dim>::compute_operator_weights() {
   for (int i = 0; i < n; ++i)
     operator_mode_[i] = particles_.kind[i] == kWall ? 0 : (particles_.surface[i] ? 1 : 2);
   compute_operators(nb_, kernel_.h(), particles_.volume, operator_mode_, op_);
+  exchange(op_.order);  // the pin and the uniform source read every row's
 }
 
 template void IsphSolver<2>::find_neighbors();

@@ -26,7 +26,7 @@ void IsphSolver<Dim>::compute_wall_ghosts() {
   // of a sphere was that of one half a spacing smaller (-26% at d = 5 dx).
   wall_ghost_.resize(n);
 #pragma omp parallel for schedule(static)
-  for (int i = 0; i < n; ++i) {
+  for (int i = first_; i < last_; ++i) {
     const bool solid = P.kind[i] == kSolid && P.surface[i] != kDrySolid;
     if (P.kind[i] != kWall && !solid) {
       wall_ghost_[i] = P.v[i];
@@ -62,6 +62,7 @@ void IsphSolver<Dim>::compute_wall_ghosts() {
       wall_ghost_[i] = P.v[i] + (rel - rn) - ratio * rn;
     }
   }
+  exchange(wall_ghost_);
 }
 
 template <int Dim>
@@ -72,12 +73,13 @@ void IsphSolver<Dim>::compute_eddy_viscosity() {
   if (config_.smagorinsky) {
     const double cs_dx = config_.smagorinsky_constant * P.spacing;
 #pragma omp parallel for schedule(static)
-    for (int i = 0; i < n; ++i) {
+    for (int i = first_; i < last_; ++i) {
       if (P.kind[i] != kFluid) continue;
       const Mat<Dim> g = gradient(nb_, op_, P.v, i);
       const Mat<Dim> S = 0.5 * (g + g.transpose());
       eddy_viscosity_[i] = cs_dx * cs_dx * std::sqrt(2.0 * S.squaredNorm());
     }
+    exchange(eddy_viscosity_);
     max_eddy_viscosity_ = *std::max_element(eddy_viscosity_.begin(), eddy_viscosity_.end());
   }
 }
@@ -88,7 +90,7 @@ void IsphSolver<Dim>::predict(double dt) {
   auto& P = particles_;
   const double nu = config_.viscosity;
   try {
-    porous_.prepare(P, nb_, dt);
+    porous_.prepare(P, nb_, dt, block_share());
   } catch (const std::invalid_argument& e) {
     throw SimulationError(
         std::string("porous terms at t = ") + format_number(time_, 4) + " s: " + e.what(),
@@ -96,7 +98,7 @@ void IsphSolver<Dim>::predict(double dt) {
   }
   u_star_.resize(n);
 #pragma omp parallel for schedule(static)
-  for (int i = 0; i < n; ++i) {
+  for (int i = first_; i < last_; ++i) {
     // The zone's rows see the pressure like fluid rows, and the projection makes the field
     // divergence-free assuming the corrector acts on them too. Like walls they therefore carry
     // the body acceleration: otherwise the hydrostatic gradient alone reads as a correction of
@@ -133,11 +135,11 @@ void IsphSolver<Dim>::predict(double dt) {
     u_star_[i] = P.v[i] + dt * ((nu + eddy_viscosity_[i]) * laplacian(nb_, op_, wall_ghost_, i) +
                                 config_.gravity);
   }
+  exchange(u_star_);  // the walls' u* below and the divergence read the fluid's
 }
 
 template <int Dim>
 void IsphSolver<Dim>::set_wall_u_star(double dt) {
-  const int n = static_cast<int>(particles_.size());
   auto& P = particles_;
   // In div u* only the wall-normal velocity is a boundary condition. A no-slip wall's zero
   // tangential velocity next to fluid sliding along it reads as a divergence wherever the wall
@@ -145,7 +147,7 @@ void IsphSolver<Dim>::set_wall_u_star(double dt) {
   // pocket of suction that pulled the toe into the floor. Walls with known normals therefore
   // carry the fluid's tangential u* (Shepard average) and their own normal u*.
 #pragma omp parallel for schedule(static)
-  for (int i = 0; i < n; ++i) {
+  for (int i = first_; i < last_; ++i) {
     if (P.kind[i] != kWall || P.normal[i].squaredNorm() == 0.0) continue;
     double ws = 0.0;
     Vec<Dim> us = Vec<Dim>::Zero();
@@ -161,6 +163,7 @@ void IsphSolver<Dim>::set_wall_u_star(double dt) {
     const Vec<Dim> own = P.v[i] + dt * porous_.pressure_coefficient(i) * config_.gravity;
     u_star_[i] = us - us.dot(nrm) * nrm + own.dot(nrm) * nrm;
   }
+  exchange(u_star_);
 }
 
 template void IsphSolver<2>::compute_wall_ghosts();

@@ -31,12 +31,13 @@ void IsphSolver<Dim>::compute_pressure_rhs(double dt) {
   const double rho0 = config_.density;
   rhs_.assign(n, 0.0);
 #pragma omp parallel for schedule(static)
-  for (int i = 0; i < n; ++i) {
+  for (int i = first_; i < last_; ++i) {
     if (P.kind[i] == kWall) continue;
     const double density_error = full_support_[i] ? 1.0 - number_density_[i] / n0_ : 0.0;
     rhs_[i] = rho0 / dt * divergence(nb_, op_, u_star_, i) +
               config_.alpha_s * rho0 * density_error / (dt * dt);
   }
+  exchange(rhs_);  // the net source is a sum over every row
   remove_net_source(P, rhs_);
 }
 
@@ -85,7 +86,14 @@ void IsphSolver<Dim>::solve_pressure(StepStats& stats) {
       unit_response_pin_ = P.id[system_.pinned];
       if (!fresh) unit_response_.resize(0);
     }
-    unit_response_lambda_ = fresh ? spread_pinned_source(system_, unit_response_, pressure_) : 0.0;
+    if (fresh) {
+      // Only the process whose rows hold the pin assembled its interior equation.
+      const bool own_pin = system_.pinned >= first_ && system_.pinned < last_;
+      double lambda = own_pin ? pinned_lambda(system_, unit_response_, pressure_) : 0.0;
+      if (blocked_) lambda = share_->sum(lambda);
+      pressure_ -= lambda * unit_response_;
+      unit_response_lambda_ = lambda;
+    }
   }
   if (s.broke_down || !std::isfinite(s.residual) ||
       s.residual > 1e3 * config_.pressure_solver.tolerance)

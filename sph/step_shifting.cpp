@@ -13,7 +13,7 @@ void IsphSolver<Dim>::shift(double dt) {
   // Fluid with full support shifts freely; at and next to the free surface only tangentially.
   shift_mode_.resize(n);
 #pragma omp parallel for schedule(static)
-  for (int i = 0; i < n; ++i) {
+  for (int i = first_; i < last_; ++i) {
     // With surface_refill every particle that is not on the surface shifts freely: voids under
     // the top row (return flow beside the walls) are otherwise closed by nothing.
     const bool free_shift = full_support_[i] || (!surface_depth_.empty() && !P.surface[i]);
@@ -27,12 +27,12 @@ void IsphSolver<Dim>::shift(double dt) {
       if (nf < 3 * Dim) shift_mode_[i] = 0;
     }
   }
-  compute_shifts(P, nb_, kernel_, config_.shifting, dt, shift_mode_, shift_);
+  compute_shifts(P, nb_, kernel_, config_.shifting, dt, shift_mode_, shift_, block_share());
   if (!surface_depth_.empty()) {
     // Lift exposed second-row particles onto the surface line (surface_refill).
     const Vec<Dim> up = -config_.gravity.normalized();
     const double cap = config_.shifting.max_fraction * P.spacing;
-    for (int i = 0; i < n; ++i) {
+    for (int i = first_; i < last_; ++i) {
       if (P.kind[i] != kFluid || !(surface_depth_[i] > 0.0)) continue;
       // Only into a gap: nothing directly above within a column of half a spacing's radius.
       bool blocked = false;
@@ -55,8 +55,9 @@ void IsphSolver<Dim>::shift(double dt) {
   // particle's velocity was amplified by a fixed factor in every step, and the shift itself
   // grows with |u|. Surface and toe particles ran away exponentially in the step count, which
   // is why a smaller dt failed earlier. The limiter is inactive in smooth interior flow.
+  exchange(shift_);  // the separation of close pairs reads both particles' shifts
 #pragma omp parallel for schedule(static)
-  for (int i = 0; i < n; ++i) {
+  for (int i = first_; i < last_; ++i) {
     if (!shift_mode_[i]) {
       u_star_[i] = P.v[i];
       continue;
@@ -72,6 +73,7 @@ void IsphSolver<Dim>::shift(double dt) {
     u_star_[i] = u.cwiseMax(lo).cwiseMin(hi);
   }
   P.v.swap(u_star_);
+  exchange(P.v);
 }
 
 template void IsphSolver<2>::shift(double);

@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <vector>
 
 #include "petsc_error.hpp"
+#include "row_share.hpp"
 
 namespace isph {
 
@@ -97,7 +99,7 @@ class AmgSolver : public LinearSolver {
   SolveStats solve(const SparseMatrix& A_in, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                    double reference) override {
     SolveStats s;
-    const double scale = std::max(b.norm(), reference);
+    const double scale = std::max(norm_of_blocks(b), reference);
     if (scale == 0.0) {
       x.setZero();
       s.converged = true;
@@ -157,7 +159,7 @@ class AmgSolver : public LinearSolver {
     KSPConvergedReason why = KSP_CONVERGED_ITERATING;
     KSPGetConvergedReason(ksp_.h, &why);
     s.iterations = static_cast<int>(its);
-    s.residual = (b - *A * x).norm() / scale;
+    s.residual = residual_of_blocks(*A, b, x) / scale;
     s.converged = why > 0 && s.residual <= config_.tolerance * (1.0 + 1e-6);
     if (why < 0) s.reason = std::string("PETSc: ") + KSPConvergedReasons[why];
     // Running out of iterations or a Krylov breakdown may still leave a usable pressure (GMRES
@@ -246,9 +248,29 @@ class AmgSolver : public LinearSolver {
     check_petsc(MatSeqAIJRestoreArray(mat_.h, &values), "updating the matrix");
   }
 
-  // The first row of rank r's block of n rows (r = ranks_: n).
-  int block_start(int n, int r) const {
-    return static_cast<int>(static_cast<long>(n) * r / ranks_);
+  int block_start(int n, int r) const { return isph::block_start(n, r, ranks_); }
+
+  bool distributed_rows() const override { return ranks_ > 1; }
+
+  // |b| and |b - A x| from every rank's own block: the rows of other blocks may not be
+  // assembled here.
+  double norm_of_blocks(const Eigen::VectorXd& b) const {
+    if (ranks_ == 1) return b.norm();
+    const int n = static_cast<int>(b.size());
+    const int first = block_start(n, rank_);
+    return sum_over_ranks(b.segment(first, block_start(n, rank_ + 1) - first).squaredNorm());
+  }
+  double residual_of_blocks(const SparseMatrix& A, const Eigen::VectorXd& b,
+                            const Eigen::VectorXd& x) const {
+    if (ranks_ == 1) return (b - A * x).norm();
+    const int n = static_cast<int>(b.size());
+    const int first = block_start(n, rank_), m = block_start(n, rank_ + 1) - first;
+    const Eigen::VectorXd r = b.segment(first, m) - A.middleRows(first, m) * x;
+    return sum_over_ranks(r.squaredNorm());
+  }
+  double sum_over_ranks(double squares) const {
+    MPI_Allreduce(MPI_IN_PLACE, &squares, 1, MPI_DOUBLE, MPI_SUM, comm_);
+    return std::sqrt(squares);
   }
 
   // Every rank's block of x to every rank.

@@ -2,7 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
+
+#include <mpi.h>
+
+#include "block_row_share.hpp"
 
 namespace isphdem {
 
@@ -30,6 +35,12 @@ FluidRun<Dim>::FluidRun(FluidScene<Dim> scene, const RunSettings& settings)
       throw CaseError(m.str());
     }
   }
+  // Under mpirun every rank holds the whole fluid; each computes its block of rows of every
+  // stage (sph/row_share.hpp) where the pressure solver is distributed too (amg).
+  int mpi = 0, ranks = 1;
+  MPI_Initialized(&mpi);
+  if (mpi) MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  if (ranks > 1) solver_.share_rows(std::make_shared<isph::BlockRowShare>(MPI_COMM_WORLD));
 }
 
 template <int Dim>

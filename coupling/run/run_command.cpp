@@ -51,6 +51,9 @@ void print_ppe_cost(const isph::IsphSolver<Dim>& solver) {
   std::printf("  pressure solve (%s): setup %.3g ms/step, iterations %.3g ms/step\n",
               solver.config().pressure_solver.preconditioner.c_str(), 1e3 * t.solve_setup / steps,
               1e3 * (t.solve - t.solve_setup) / steps);
+  if (solver.rows_shared())
+    std::printf("  rows shared between the ranks: exchanges %.3g ms/step (%.1f%% of the fluid)\n",
+                1e3 * t.exchange / steps, 100 * t.exchange / t.total());
 }
 
 const char* kUsage =

@@ -112,17 +112,19 @@ void UnresolvedCoupling<Dim>::after_fluid_step(const DemState&, const isph::Isph
   std::vector<int> index_of(static_cast<std::size_t>(P.next_id), -1);
   for (std::size_t i = 0; i < P.size(); ++i) index_of[P.id[i]] = static_cast<int>(i);
   const std::size_t rows = mapped_ids_.size();
-  std::vector<isph::Vec<Dim>> reaction(rows, isph::Vec<Dim>::Zero()), grad_p(rows);
+  std::vector<isph::Vec<Dim>> reaction(rows, isph::Vec<Dim>::Zero());
+  std::vector<int> at(rows);
   balance_ = {};
   for (std::size_t r = 0; r < rows; ++r) {
     const int i = index_of[mapped_ids_[r]];
     if (i < 0) throw std::logic_error("unresolved coupling: a mapped particle disappeared");
+    at[r] = i;
     const double eps = P.porosity[i];
     // The implicit resistance of the step with the same K, at the final v_D.
     reaction[r] = eps * rho * P.volume * P.resistance[i] * (P.v[i] / eps - P.solid_velocity[i]);
     balance_.fluid_resistance -= depth_ * reaction[r];
-    grad_p[r] = isph::gradient(solver.neighbors(), solver.operators(), P.p, i);
   }
+  const std::vector<isph::Vec<Dim>> grad_p = solver.pressure_gradient_at(at);
   GrainLoads<Dim> gl = distribute_reactions(field_.weights, grains_, reaction, depth_);
   // grad p at each grain: the kernel average of the particles' gradients over the same weights.
   std::vector<isph::Vec<Dim>> grad_at(grains_.size(), isph::Vec<Dim>::Zero());

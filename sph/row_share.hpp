@@ -1,0 +1,42 @@
+#pragma once
+// How the rows of a step (the particles in storage order) are shared between processes. One
+// process computes every row. With several (sph_mpi/block_row_share.hpp) each computes a
+// contiguous block of rows, the same block as its rows of the distributed pressure equation, and
+// after every stage that writes what another row's stage reads, the blocks are exchanged so that
+// every process again holds every row. The solver's stages only ever loop over [first, last);
+// what they leave in other rows is replaced by the exchange.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace isph {
+
+// The first row of part p's block of n rows (p = parts: n). The AMG backend's rows are these.
+inline int block_start(int n, int part, int parts) {
+  return static_cast<int>(static_cast<long>(n) * part / parts);
+}
+
+class RowShare {
+ public:
+  virtual ~RowShare() = default;
+  virtual int parts() const { return 1; }
+  virtual int part() const { return 0; }
+  int first(int n) const { return block_start(n, part(), parts()); }
+  int last(int n) const { return block_start(n, part() + 1, parts()); }
+
+  // Every process's block of `data` (n rows of row_bytes bytes) to every process.
+  virtual void exchange_rows(void* /*data*/, std::size_t /*row_bytes*/, int /*n*/) const {}
+  // All processes' lists, in the order of the parts.
+  virtual std::vector<int> concatenate(const std::vector<int>& mine) const { return mine; }
+  virtual double sum(double x) const { return x; }
+  // Element-wise sum over the processes, in place.
+  virtual void sum_in_place(double* /*data*/, std::size_t /*count*/) const {}
+  virtual double max(double x) const { return x; }
+
+  template <class T>
+  void exchange(std::vector<T>& rows) const {
+    if (parts() > 1) exchange_rows(rows.data(), sizeof(T), static_cast<int>(rows.size()));
+  }
+};
+
+}  // namespace isph
