@@ -1,11 +1,11 @@
 #include "run/fluid_run.hpp"
 
+#include <mpi.h>
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
 #include <sstream>
-
-#include <mpi.h>
 
 #include "block_row_share.hpp"
 

@@ -1,5 +1,7 @@
 #include "run/run_report.hpp"
 
+#include <mpi.h>
+
 #include <cmath>
 #include <cstdio>
 
@@ -28,6 +30,13 @@ void RunReport::cost(double time, long steps, long particles, double wall, long 
   result_.wall_seconds = wall;
   result_.particle_steps_per_second = wall > 0 ? double(particles) * double(steps) / wall : NAN;
   result_.ppe_iterations_per_step = steps > 0 ? double(ppe) / double(steps) : 0.0;
+}
+
+void RunReport::parallel(bool rows_shared) {
+  int mpi = 0;
+  MPI_Initialized(&mpi);
+  if (mpi) MPI_Comm_size(MPI_COMM_WORLD, &result_.ranks);
+  result_.rows_shared = rows_shared;
 }
 
 void RunReport::stopped(const std::string& why, const std::string& cause) {

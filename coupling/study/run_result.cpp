@@ -64,6 +64,8 @@ void write_run_result(const std::filesystem::path& file, const RunResult& r) {
                   {"wall_seconds", number(r.wall_seconds)},
                   {"particle_steps_per_second", number(r.particle_steps_per_second)},
                   {"ppe_iterations_per_step", number(r.ppe_iterations_per_step)},
+                  {"ranks", r.ranks},
+                  {"rows_shared", r.rows_shared},
                   {"metrics", metrics}};
   // A message with bytes that are not UTF-8 (a path, LIGGGHTS's words) must not lose the file.
   write_file_atomically(file, j.dump(2, ' ', false, json::error_handler_t::replace) + "\n");
@@ -99,6 +101,9 @@ std::optional<RunResult> read_run_result(const std::filesystem::path& file) {
   r.wall_seconds = number(j, "wall_seconds");
   r.particle_steps_per_second = number(j, "particle_steps_per_second");
   r.ppe_iterations_per_step = number(j, "ppe_iterations_per_step");
+  r.ranks = std::isfinite(number(j, "ranks")) ? int(number(j, "ranks")) : 1;
+  r.rows_shared =
+      j.contains("rows_shared") && j["rows_shared"].is_boolean() && j["rows_shared"].get<bool>();
   if (j.contains("metrics") && j["metrics"].is_array())
     for (const auto& m : j["metrics"]) {
       if (!m.is_object() || text(m, "name").empty()) continue;

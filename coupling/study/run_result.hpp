@@ -26,6 +26,8 @@ struct RunResult {
   double wall_seconds = 0.0;
   double particle_steps_per_second = 0.0;
   double ppe_iterations_per_step = 0.0;
+  int ranks = 1;             // MPI ranks of the run
+  bool rows_shared = false;  // each rank computed its block of the fluid's rows (docs/parallel.md)
   std::vector<MetricResult> metrics;
 };
 

@@ -1,6 +1,7 @@
-// `mpirun -np N isphdem run` on fluid-only cases (the fluid replicated on every rank, the PPE one
-// PETSc system over the ranks): the same result as one rank to solver tolerance, and a run that
-// must stop stops every rank with one message and valid output.
+// `mpirun -np N isphdem run` on fluid-only cases (every rank holds the fluid and computes its
+// block of rows of each stage, the PPE one PETSc system over the ranks): the same result as one
+// rank to solver tolerance, and a run that must stop stops every rank with one message and valid
+// output.
 //
 // "To solver tolerance" is checked over a few steps, at solver.pressure_tolerance = 1e-10, in max
 // norms: positions in units of dx, velocities of the flow's speed scale, pressures of the largest
