@@ -22,7 +22,7 @@ import tempfile
 ALLOWED = {
     "sph": set(),  # the ISPH library: no coupling, no LIGGGHTS, no MPI
     "sph_petsc": {"sph", "PETSc", "MPI"},  # the PPE on PETSc + hypre, registered with sph/
-    "sph_mpi": {"sph", "MPI"},  # the fluid decomposed over MPI ranks: RCB, migration, halo
+    "sph_mpi": {"sph", "MPI"},  # the fluid over MPI ranks: shared rows; RCB, migration, halo
     "liggghts_fix": {"LIGGGHTS", "MPI"},
     "coupling": {"sph"},  # the seam: DemState and the CouplingStage interface
     "case": {"sph"},
@@ -32,7 +32,7 @@ ALLOWED = {
     "resolved": {"coupling", "case", "sph"},
     "study": {"case", "io", "coupling", "sph"},  # result.json, [reference], isphdem study
     "run": {"case", "io", "dem", "unresolved", "resolved", "study", "coupling", "sph", "sph_petsc",
-            "MPI"},
+            "sph_mpi", "MPI"},
 }
 COUPLING_ROOMS = ["case", "io", "dem", "unresolved", "resolved", "study", "run"]
 SOURCE = (".cpp", ".hpp", ".h")

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # MPI ranks against OpenMP threads (issue 26), on this machine's 2 cores: each case run as
 # 1 rank x 1 thread, 2 ranks x 1 thread (mpirun) and 1 rank x 2 threads, PPE with amg, one run
-# each in one go, same binary. Today only the pressure equation is shared between ranks (one
-# PETSc system); the rest of a step is replicated on every rank (docs/parallel.md), so the
-# ranks' gain is bounded by the PPE's share of a step.
-# Parsed from the summary of `isphdem run`: wall time, particle-steps/s, PPE iterations per step,
-# the PPE's setup and iteration ms per step, and the wall time per simulated second.
+# each in one go, same binary. Every rank holds the whole fluid and computes its block of rows of
+# each stage, exchanging the blocks between stages; the pressure equation is one PETSc system
+# (docs/parallel.md). Cases with PMS solids keep every row on every rank.
+# Parsed from the summary of `isphdem run` and result.json: wall time, particle-steps/s, PPE
+# iterations per step, the PPE's setup and iteration ms per step, the exchanges' ms per step,
+# whether the rows were shared, and the wall time per simulated second.
 # Writes results.csv and results.md next to this script. Waits for a quiet machine before each
 # run (bench/quiet_machine.sh).
 #
@@ -33,7 +34,7 @@ mkdir -p "$work"
 source "$here/../quiet_machine.sh"
 
 csv=$here/results.csv
-echo "case,particles,ranks,threads,sim_time,steps,wall_s,wall_per_sim_s,particle_steps_per_s,ppe_it_per_step,setup_ms_per_step,iterate_ms_per_step,load1" >"$csv"
+echo "case,particles,ranks,threads,sim_time,steps,wall_s,wall_per_sim_s,particle_steps_per_s,ppe_it_per_step,setup_ms_per_step,iterate_ms_per_step,exchange_ms_per_step,rows_shared,load1" >"$csv"
 for r in $RUNS; do
   IFS=: read -r case dx t_end dt <<<"$r"
   sets=(--set time.end="$t_end" --set output.interval=1e9 --set solver.preconditioner='"amg"')
@@ -58,13 +59,17 @@ m = re.search(r"particles: (\d+) fluid, (\d+) wall", text) or \
     re.search(r"fluid: (\d+) fluid, (\d+) wall particles", text)
 n = int(m[1]) + int(m[2])
 steps = int(re.search(r"in (\d+) (?:fluid )?steps", text)[1])
-wall = json.load(open(result))["wall_seconds"]  # the summary line rounds it
+res = json.load(open(result))
+wall = res["wall_seconds"]  # the summary line rounds it
+shared = "yes" if res.get("rows_shared") else "no"
+ex = re.search(r"exchanges ([\d.e+-]+) ms/step", text)
+exchange = float(ex[1]) if ex else 0.0
 its = float(re.search(r"([\d.]+) PPE iterations/step", text)[1])
 setup, iterate = map(float, re.search(r"setup ([\d.e+]+) ms/step, iterations ([\d.e+]+) ms/step",
                                       text).groups())
 t = float(t_end)
 print(f"{case},{n},{ranks},{threads},{t},{steps},{wall:.4g},{wall / t:.4g},"
-      f"{n * steps / wall:.4g},{its},{setup:.4g},{iterate:.4g},{load}")
+      f"{n * steps / wall:.4g},{its},{setup:.4g},{iterate:.4g},{exchange:.3g},{shared},{load}")
 PY
     tail -1 "$csv" >&2
   done
@@ -74,8 +79,8 @@ done
   echo "Ranks against threads, isphdem run, $(date -u +%Y-%m-%d), $(nproc) cores" \
        "($(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1)), PPE amg"
   echo
-  echo "| case | particles | ranks × threads | steps | wall (s) | wall per simulated s | speed-up vs 1×1 | particle-steps/s | PPE it/step | PPE setup ms/step | PPE iterations ms/step | load before |"
-  echo "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+  echo "| case | particles | ranks × threads | steps | wall (s) | wall per simulated s | speed-up vs 1×1 | particle-steps/s | PPE it/step | PPE setup ms/step | PPE iterations ms/step | exchanges ms/step | rows shared | load before |"
+  echo "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|"
   /usr/bin/python3 - "$csv" <<'PY'
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
@@ -90,7 +95,7 @@ for r in rows:
     print(f"| {r['case']} | {r['particles']} | {r['ranks']} × {r['threads']} | {r['steps']} | "
           f"{r['wall_s']} | {r['wall_per_sim_s']} | {up} | {r['particle_steps_per_s']} | "
           f"{r['ppe_it_per_step']} | {r['setup_ms_per_step']} | {r['iterate_ms_per_step']} | "
-          f"{r['load1']} |")
+          f"{r['exchange_ms_per_step']} | {r['rows_shared']} | {r['load1']} |")
 PY
 } >"$here/results.md"
 cat "$here/results.md"
