@@ -4,6 +4,12 @@
 // stop the run, not let the fluid run alone.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <utility>
+#include <vector>
+
 #include "mpi_support.hpp"
 
 namespace isphdem::cli {
@@ -54,6 +60,38 @@ TEST(CoupledMpi, ScriptWithoutGrainsOnTheRanksStopsTheRun) {
   EXPECT_EQ(count(r.output, "created no grains"), 1);
   EXPECT_NE(r.output.find("`processors` command"), std::string::npos);
   EXPECT_EQ(count_snapshots(dir / "out"), 0);
+}
+
+TEST(CoupledMpi, GrainLeavingOnRankOneStopsEveryRankWithItsMessage) {
+  // The settling grain in a box cut off 3 mm above it, split in y over the 2 ranks
+  // (`processors 1 2 1`: rank 1 holds the upper half, the grain's), rising at 0.3 m/s: it leaves
+  // the box after about 10 ms and LIGGGHTS drops it silently on rank 1.
+  const auto dir = scratch("coupled_mpi_grain_lost");
+  const auto source = std::filesystem::path(ISPHDEM_SOURCE_DIR) / "examples" / "settling_grain";
+  for (const auto& e : std::filesystem::directory_iterator(source))
+    if (e.is_regular_file()) std::filesystem::copy_file(e.path(), dir / e.path().filename());
+  std::ifstream in(dir / "in.liggghts");
+  std::string script((std::istreambuf_iterator<char>(in)), {});
+  const std::vector<std::pair<std::string, std::string>> edits{
+      {"region          box", "processors      1 2 1\nregion          box"},
+      {"box block 0 0.02 -0.01 0.11", "box block 0 0.02 -0.01 0.083"},
+      {"run             0", "velocity all set 0.0 0.3 0.0\nrun 0"}};
+  for (const auto& [from, to] : edits) {
+    const auto at = script.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    script.replace(at, from.size(), to);
+  }
+  write_file(dir / "in.liggghts", script);
+  const Result r = mpirun_run(2, (dir / "case.toml").string() + " --out " + (dir / "out").string() +
+                                     " --set time.end=0.05 --set output.interval=0.005");
+  std::printf("%s", r.output.c_str());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(count(r.output, "grain 1 left the DEM simulation between t = "), 1);
+  EXPECT_NE(r.output.find("last seen at"), std::string::npos);
+  // The snapshots written before stay readable, with the grain in the first.
+  EXPECT_GE(count_snapshots(dir / "out"), 2);
+  const Fields first = read_fields(dir / "out" / "snap_00000000.h5", "dem");
+  EXPECT_EQ(first.x.size(), 3u);
 }
 
 }  // namespace
