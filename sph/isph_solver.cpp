@@ -72,8 +72,8 @@ template <int Dim>
 StepStats IsphSolver<Dim>::step(double dt) {
   if (!(dt > 0.0) || !std::isfinite(dt)) throw SimulationError("time step must be positive");
   const int n = static_cast<int>(particles_.size());
-  blocked_ = share_->parts() > 1 && linear_solver_->distributed_rows() &&
-             unit_solver_->distributed_rows() && particles_.count(kSolid) == 0;
+  blocked_ =
+      share_->parts() > 1 && linear_solver_->distributed_rows() && unit_solver_->distributed_rows();
   first_ = blocked_ ? share_->first(n) : 0;
   last_ = blocked_ ? share_->last(n) : n;
   update_forcing_kinds();
@@ -105,7 +105,9 @@ StepStats IsphSolver<Dim>::step(double dt) {
   {
     Stopwatch w(timings_.rest);
     correct(dt);
-    follow_enclosing_solids(particles_, nb_, config_.pocket_solid_fraction, config_.density, dt);
+    if (follow_enclosing_solids(particles_, nb_, config_.pocket_solid_fraction, config_.density, dt,
+                                block_share()) > 0)
+      exchange(particles_.v);  // the blended rows (the count is over all processes)
     shift(dt);
     advect(dt, stats);
   }

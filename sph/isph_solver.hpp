@@ -152,8 +152,8 @@ class IsphSolver {
   // Body acceleration for the coming steps (a flow-rate drive adjusts it between steps).
   void set_gravity(const Vec<Dim>& g) { config_.gravity = g; }
   // Shares the rows of every step between the processes of `share` (sph/row_share.hpp). Takes
-  // effect in the steps where the pressure solver is distributed over the same processes and no
-  // PMS solid is present; other steps compute every row on every process, as before.
+  // effect in the steps where the pressure solver is distributed over the same processes; with
+  // another solver every process computes every row, as before.
   void share_rows(std::shared_ptr<const RowShare> share) { share_ = std::move(share); }
   // grad p of the last step at the given rows (storage order), on every process: with shared
   // rows only the process that computed a row holds its neighbour list (neighbors()).

@@ -38,13 +38,19 @@ double solid_share(const Particles<Dim>& P, const Neighbors<Dim>& nb, int i) {
 
 template <int Dim>
 int follow_enclosing_solids(Particles<Dim>& P, const Neighbors<Dim>& nb, double onset, double rho0,
-                            double dt) {
+                            double dt, const RowShare* share) {
   // Fluid-only and unresolved runs have no PMS particles: no sweep over the neighbours.
   if (!(onset < 1.0) || P.count(kSolid) == 0) return 0;
   const int n = static_cast<int>(P.size());
+  const int first = share ? share->first(n) : 0, last = share ? share->last(n) : n;
   int blended = 0;
+  struct Reaction {
+    int j;
+    Vec<Dim> force;
+  };
+  std::vector<Reaction> reactions;  // with shared rows: applied below, in row order
   // Serial: few particles qualify, and the reaction is scattered to shared solid neighbours.
-  for (int i = 0; i < n; ++i) {
+  for (int i = first; i < last; ++i) {
     if (P.kind[i] != kFluid) continue;
     const SolidSupport<Dim> sup = solid_support(P, nb, i);
     if (!(sup.solid > onset * sup.all)) continue;
@@ -57,16 +63,26 @@ int follow_enclosing_solids(Particles<Dim>& P, const Neighbors<Dim>& nb, double 
     const Vec<Dim> reaction = -rho0 * P.volume * dv / dt;
     for (int k = nb.begin(i); k < nb.end(i); ++k) {
       const int j = nb.index[k];
-      if (P.kind[j] == kSolid) P.solid_force[j] += nb.w[k] / sup.solid * reaction;
+      if (P.kind[j] != kSolid) continue;
+      if (share)
+        reactions.push_back({j, nb.w[k] / sup.solid * reaction});
+      else
+        P.solid_force[j] += nb.w[k] / sup.solid * reaction;
     }
     ++blended;
+  }
+  if (share) {
+    for (const auto& r : share->concatenate(reactions)) P.solid_force[r.j] += r.force;
+    blended = static_cast<int>(share->sum(blended));
   }
   return blended;
 }
 
 template double solid_share<2>(const Particles<2>&, const Neighbors<2>&, int);
 template double solid_share<3>(const Particles<3>&, const Neighbors<3>&, int);
-template int follow_enclosing_solids<2>(Particles<2>&, const Neighbors<2>&, double, double, double);
-template int follow_enclosing_solids<3>(Particles<3>&, const Neighbors<3>&, double, double, double);
+template int follow_enclosing_solids<2>(Particles<2>&, const Neighbors<2>&, double, double, double,
+                                        const RowShare*);
+template int follow_enclosing_solids<3>(Particles<3>&, const Neighbors<3>&, double, double, double,
+                                        const RowShare*);
 
 }  // namespace isph

@@ -18,6 +18,7 @@
 // those solid neighbours (solid_force, by weight), so the exchange conserves momentum.
 #include "neighbors.hpp"
 #include "particles.hpp"
+#include "row_share.hpp"
 
 namespace isph {
 
@@ -31,9 +32,11 @@ double solid_share(const Particles<Dim>& particles, const Neighbors<Dim>& nb, in
 // Applies the blend to every fluid particle (kind kFluid) with a solid share above `onset`, after
 // the corrector; adds the reaction to the solid neighbours' solid_force (N, per unit depth in
 // 2D, for a step dt with fluid density rho0). Returns the number of particles blended. onset >= 1
-// turns it off.
+// turns it off. With shared rows (sph/row_share.hpp, nb for this process's rows only) the blend
+// acts on this process's rows, and the reactions of all processes are added to every row's
+// solid_force in the one-process order (velocities: exchange them after).
 template <int Dim>
 int follow_enclosing_solids(Particles<Dim>& particles, const Neighbors<Dim>& nb, double onset,
-                            double rho0, double dt);
+                            double rho0, double dt, const RowShare* share = nullptr);
 
 }  // namespace isph

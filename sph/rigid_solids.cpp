@@ -173,9 +173,11 @@ Vec<Dim> pms_force(const Particles<Dim>& P, const Neighbors<Dim>& nb, const Oper
 }
 
 template <int Dim>
-void mark_dry_solids(Particles<Dim>& particles, const Neighbors<Dim>& nb, const Vec<Dim>& gravity) {
+void mark_dry_solids(Particles<Dim>& particles, const Neighbors<Dim>& nb, const Vec<Dim>& gravity,
+                     const RowShare* share) {
   auto& P = particles;
   const int n = static_cast<int>(P.size());
+  const int first = share ? share->first(n) : 0, last = share ? share->last(n) : n;
   if (gravity.squaredNorm() == 0.0) return;
   int nbodies = 0;
   for (int i = 0; i < n; ++i)
@@ -184,18 +186,22 @@ void mark_dry_solids(Particles<Dim>& particles, const Neighbors<Dim>& nb, const 
   const Vec<Dim> up = -gravity.normalized();
   // Fluid within one support of a body, then free-surface fluid within one support of those.
   std::vector<int> near(n, -1);
-  for (int i = 0; i < n; ++i) {
+  for (int i = first; i < last; ++i) {
     if (P.kind[i] == kSolid || P.kind[i] == kWall) continue;
     for (int k = nb.begin(i); k < nb.end(i) && near[i] < 0; ++k)
       if (P.kind[nb.index[k]] == kSolid) near[i] = P.body[nb.index[k]];
   }
-  std::vector<std::vector<Vec<Dim>>> line(nbodies);
-  for (int i = 0; i < n; ++i) {
+  if (share) share->exchange(near);
+  std::vector<std::pair<int, int>> points;  // (body, particle) in row order
+  for (int i = first; i < last; ++i) {
     if (!P.surface[i] || P.kind[i] == kSolid || P.kind[i] == kWall) continue;
     int b = near[i];
     for (int k = nb.begin(i); k < nb.end(i) && b < 0; ++k) b = near[nb.index[k]];
-    if (b >= 0) line[b].push_back(P.x[i]);
+    if (b >= 0) points.emplace_back(b, i);
   }
+  if (share) points = share->concatenate(points);
+  std::vector<std::vector<Vec<Dim>>> line(nbodies);
+  for (const auto& [b, i] : points) line[b].push_back(P.x[i]);
   // Height of the waterline of body b below/above x: h = a + c s (s horizontal, 2D) or h = a.
   std::vector<double> a(nbodies, 0.0), c(nbodies, 0.0);
   std::vector<Vec<Dim>> origin(nbodies, Vec<Dim>::Zero());
@@ -232,7 +238,8 @@ void mark_dry_solids(Particles<Dim>& particles, const Neighbors<Dim>& nb, const 
   // Fluid at the waterline beside a body counted the dry part as kernel support and escaped the
   // free-surface test; as an interior row next to p = 0 it took -600 Pa of suction when the body
   // rose, and blew up. It is free surface where it has dry neighbours and is not below the line.
-  for (int i = 0; i < n; ++i) {
+  // (The solids above are marked in every row, so that these rows read their neighbours' marks.)
+  for (int i = first; i < last; ++i) {
     if (P.kind[i] == kSolid || P.kind[i] == kWall || P.surface[i]) continue;
     for (int k = nb.begin(i); k < nb.end(i); ++k) {
       const int j = nb.index[k];
@@ -273,8 +280,10 @@ template Vec<2> pms_force<2>(const Particles<2>&, const Neighbors<2>&, const Ope
                              double, double, const Vec<2>&, const Vec<2>&);
 template Vec<3> pms_force<3>(const Particles<3>&, const Neighbors<3>&, const Operators<3>&, int,
                              double, double, const Vec<3>&, const Vec<3>&);
-template void mark_dry_solids<2>(Particles<2>&, const Neighbors<2>&, const Vec<2>&);
-template void mark_dry_solids<3>(Particles<3>&, const Neighbors<3>&, const Vec<3>&);
+template void mark_dry_solids<2>(Particles<2>&, const Neighbors<2>&, const Vec<2>&,
+                                 const RowShare*);
+template void mark_dry_solids<3>(Particles<3>&, const Neighbors<3>&, const Vec<3>&,
+                                 const RowShare*);
 template void erase_particles<2>(Particles<2>&, const std::vector<uint8_t>&);
 template void erase_particles<3>(Particles<3>&, const std::vector<uint8_t>&);
 

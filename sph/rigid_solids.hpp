@@ -21,6 +21,7 @@
 #include "neighbors.hpp"
 #include "operators.hpp"
 #include "particles.hpp"
+#include "row_share.hpp"
 
 namespace isph {
 
@@ -91,9 +92,12 @@ constexpr uint8_t kDrySolid = 2;
 // line in 2D, its mean height in 3D); solid particles more than half a spacing above it become
 // dry (surface = kDrySolid: p = 0, no force), those within half a spacing of it get p = 0 like
 // the fluid's own top row (they still carry the pressure gradient below them, as that row does).
-// Bodies with no free surface near them are untouched.
+// Bodies with no free surface near them are untouched. With shared rows (sph/row_share.hpp, nb
+// for this process's rows only) the waterline is fitted from all processes' points in the
+// one-process order, and the fluid rows' marks are this process's rows'.
 template <int Dim>
-void mark_dry_solids(Particles<Dim>& particles, const Neighbors<Dim>& nb, const Vec<Dim>& gravity);
+void mark_dry_solids(Particles<Dim>& particles, const Neighbors<Dim>& nb, const Vec<Dim>& gravity,
+                     const RowShare* share = nullptr);
 
 // Removes the particles with drop[i] != 0 (all arrays, order kept).
 template <int Dim>

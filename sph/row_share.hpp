@@ -7,6 +7,7 @@
 // what they leave in other rows is replaced by the exchange.
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace isph {
@@ -26,8 +27,8 @@ class RowShare {
 
   // Every process's block of `data` (n rows of row_bytes bytes) to every process.
   virtual void exchange_rows(void* /*data*/, std::size_t /*row_bytes*/, int /*n*/) const {}
-  // All processes' lists, in the order of the parts.
-  virtual std::vector<int> concatenate(const std::vector<int>& mine) const { return mine; }
+  // All processes' lists (of bytes), in the order of the parts.
+  virtual std::vector<char> concatenate_bytes(const std::vector<char>& mine) const { return mine; }
   virtual double sum(double x) const { return x; }
   // Element-wise sum over the processes, in place.
   virtual void sum_in_place(double* /*data*/, std::size_t /*count*/) const {}
@@ -36,6 +37,18 @@ class RowShare {
   template <class T>
   void exchange(std::vector<T>& rows) const {
     if (parts() > 1) exchange_rows(rows.data(), sizeof(T), static_cast<int>(rows.size()));
+  }
+  // All processes' lists of trivially copyable T, in the order of the parts: with lists built
+  // over each part's rows in row order, the order of one process's loop over all rows.
+  template <class T>
+  std::vector<T> concatenate(const std::vector<T>& mine) const {
+    if (parts() == 1) return mine;
+    const char* bytes = reinterpret_cast<const char*>(mine.data());
+    const std::vector<char> all =
+        concatenate_bytes(std::vector<char>(bytes, bytes + mine.size() * sizeof(T)));
+    std::vector<T> out(all.size() / sizeof(T));
+    if (!out.empty()) std::memcpy(static_cast<void*>(out.data()), all.data(), all.size());
+    return out;
   }
 };
 

@@ -31,7 +31,8 @@ void IsphSolver<Dim>::correct(double dt) {
     }
     P.v[i] = u_star_[i] - dt * porous_.pressure_coefficient(i) / rho0 * gradient(nb_, op_, P.p, i);
   }
-  exchange(P.v);  // (no PMS solids when rows are shared: their forces stay where computed)
+  exchange(P.v);
+  if (P.count(kSolid) > 0) exchange(P.solid_force);  // the pocket blend adds to every row's
 }
 
 template <int Dim>

@@ -26,13 +26,13 @@ void BlockRowShare::exchange_rows(void* data, std::size_t row_bytes, int n) cons
                  comm_);
 }
 
-std::vector<int> BlockRowShare::concatenate(const std::vector<int>& mine) const {
+std::vector<char> BlockRowShare::concatenate_bytes(const std::vector<char>& mine) const {
   const int count = static_cast<int>(mine.size());
   std::vector<int> counts(parts_), starts(parts_, 0);
   MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_);
   for (int r = 1; r < parts_; ++r) starts[r] = starts[r - 1] + counts[r - 1];
-  std::vector<int> all(starts.back() + counts.back());
-  MPI_Allgatherv(mine.data(), count, MPI_INT, all.data(), counts.data(), starts.data(), MPI_INT,
+  std::vector<char> all(static_cast<std::size_t>(starts.back()) + counts.back());
+  MPI_Allgatherv(mine.data(), count, MPI_BYTE, all.data(), counts.data(), starts.data(), MPI_BYTE,
                  comm_);
   return all;
 }

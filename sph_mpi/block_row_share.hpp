@@ -13,7 +13,7 @@ class BlockRowShare : public RowShare {
   int parts() const override { return parts_; }
   int part() const override { return part_; }
   void exchange_rows(void* data, std::size_t row_bytes, int n) const override;
-  std::vector<int> concatenate(const std::vector<int>& mine) const override;
+  std::vector<char> concatenate_bytes(const std::vector<char>& mine) const override;
   double sum(double x) const override;
   void sum_in_place(double* data, std::size_t count) const override;
   double max(double x) const override;

@@ -34,8 +34,8 @@ TEST(CoupledMpi, SettlingGrainFollowsTheOneRankTrajectory) {
 TEST(CoupledMpi, BuoyancyClumpTakesTheOneRankLoad) {
   // Resolved: the held clump's hydrodynamic force is its buoyancy, 9.759e-5 N.
   const auto [a_file, b_file] =
-      run_on_one_and_many("coupled_mpi_buoyancy_clump", "buoyancy_clump", "--set time.end=0.05",
-                          /*shared=*/false);  // PMS solids: the rows stay replicated
+      run_on_one_and_many("coupled_mpi_buoyancy_clump", "buoyancy_clump",
+                          "--set time.end=0.05");  // PMS solids: the rows stay replicated
   ASSERT_EQ(a_file.filename(), b_file.filename());
   h5_read::File a(a_file.string()), b(b_file.string());
   const auto fa = a.read("bodies/force_hydro").f64, fb = b.read("bodies/force_hydro").f64;

@@ -1,15 +1,19 @@
 // Shared rows (sph/row_share.hpp, sph_mpi/block_row_share.hpp) on several ranks: each rank's
-// block reaches every rank, and the two stages with a pass over neighbours' results inside them
-// (the shifting's surface normal, the separation of close pairs) give on every rank, from
-// neighbour lists of the rank's own rows only, bit for bit the one-process result.
+// block reaches every rank, and the stages with a pass over neighbours' results or a scatter
+// inside them (the shifting's surface normal, the separation of close pairs, the dry tops of
+// bodies, the pocket blend) give on every rank, from neighbour lists of the rank's own rows only,
+// bit for bit the one-process result.
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <cmath>
 #include <random>
 
 #include "block_row_share.hpp"
 #include "lattice.hpp"
 #include "neighbors.hpp"
+#include "pocket_fluid.hpp"
+#include "rigid_solids.hpp"
 #include "shifting.hpp"
 
 namespace isph {
@@ -121,6 +125,57 @@ TEST(RowShareMpi, ShiftsAndClosePairsMatchOneProcessBitForBit) {
   // The scene must test something: pairs were separated, some of them across blocks.
   EXPECT_GT(moved, n / 20);
   EXPECT_GT(share.sum(across), 0.0) << "no close pair across a block boundary";
+}
+
+TEST(RowShareMpi, PocketBlendAndDryBodiesMatchOneProcessBitForBit) {
+  const BlockRowShare share(MPI_COMM_WORLD);
+  ASSERT_GT(share.parts(), 1) << "run under mpirun -np 2 or more";
+  // Bodies of two columns of solid particles with one column of fluid between each pair: every
+  // such fluid particle sits in a pocket (solid share about 2/3). A band of fluid across the
+  // middle, where the blocks meet, is marked free surface: every body's waterline is fitted from
+  // points of several blocks, and the bodies' parts above it are dry.
+  auto scene = [&] {
+    Scene s = crowded_lattice(share.parts());
+    for (std::size_t i = 0; i < s.p.size(); ++i) {
+      const int column = static_cast<int>(std::floor(s.p.x[i][0] / kDx + 0.5));
+      if (column % 3 != 0 && s.p.x[i][1] < 0.39) {
+        s.p.kind[i] = kSolid;
+        s.p.body[i] = column / 3;
+        s.p.v[i] = Vec<2>(0.01, 0.0);
+        s.p.solid_force[i] = Vec<2>(0.5, -0.25);
+      }
+      s.p.surface[i] = s.p.kind[i] == kFluid && s.p.x[i][1] > 0.1 && s.p.x[i][1] < 0.3;
+    }
+    return s;
+  };
+  Scene one = scene(), shared = scene();
+  const int n = static_cast<int>(one.p.size());
+  NeighborSearch<2> search(one.domain, one.kernel.support());
+  Neighbors<2> all_rows, own_rows;
+  search.build(one.p, one.kernel, all_rows);
+  search.build(shared.p, shared.kernel, own_rows, share.first(n), share.last(n));
+
+  const Vec<2> g(0.0, -9.81);
+  mark_dry_solids(one.p, all_rows, g);
+  mark_dry_solids(shared.p, own_rows, g, &share);
+  share.exchange(shared.p.surface);
+  int differ = 0, dry = 0;
+  for (int i = 0; i < n; ++i) {
+    differ += one.p.surface[i] != shared.p.surface[i];
+    dry += one.p.surface[i] == kDrySolid;
+  }
+  EXPECT_EQ(differ, 0) << "surface marks that differ from the one-process result";
+  EXPECT_GT(dry, 0) << "no dry solid: the scene tests nothing";
+
+  const int blended_one = follow_enclosing_solids(one.p, all_rows, 0.5, 1000.0, 1e-4);
+  const int blended = follow_enclosing_solids(shared.p, own_rows, 0.5, 1000.0, 1e-4, &share);
+  share.exchange(shared.p.v);
+  differ = 0;
+  for (int i = 0; i < n; ++i)
+    differ += one.p.v[i] != shared.p.v[i] || one.p.solid_force[i] != shared.p.solid_force[i];
+  EXPECT_EQ(blended, blended_one);
+  EXPECT_GT(blended_one, n / 10) << "few pockets: the scene tests little";
+  EXPECT_EQ(differ, 0) << "velocities or solid forces that differ from the one-process blend";
 }
 
 }  // namespace
