@@ -11,7 +11,8 @@
 # run (bench/quiet_machine.sh).
 #
 # usage: bench/mpi/run_ranks.sh [ISPHDEM] [WORKDIR]
-#   env: RUNS="case.toml:spacing:t_end:dt ..." (spacing/dt "-": the case's own)
+#   env: RUNS="case.toml:spacing:t_end:dt[:key=value] ..." (spacing/dt "-": the case's own;
+#        key=value: one more --set)
 #        LAYOUTS="1x1 2x1 1x2" (ranks x threads)   LOAD_MAX=0.7   LOAD_WAIT=300
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -19,11 +20,12 @@ root=$(cd "$here/../.." && pwd)
 work=${2:-/tmp/bench_mpi}
 # Taylor-Green at 40k and 160k particles at its viscous limit 0.125 dx^2 / nu (20 and 10 steps),
 # the 2D dam break's first 0.05 s (automatic step), the closed internal-erosion tank (coupled,
-# semi-resolved, LIGGGHTS on the same ranks) for 0.05 s.
+# LIGGGHTS on the same ranks) for 0.05 s, unresolved and semi-resolved.
 RUNS=${RUNS:-"taylor_green_2d/case.toml:0.005:6.25e-3:3.125e-4
   taylor_green_2d/case.toml:0.0025:7.8125e-4:7.8125e-5
   dam_break_2d/case.toml:-:0.05:-
-  internal_erosion_2d/closed.toml:-:0.05:-"}
+  internal_erosion_2d/closed.toml:-:0.05:-
+  internal_erosion_2d/closed.toml:-:0.05:-:coupling.model=\"semi-resolved\""}
 LAYOUTS=${LAYOUTS:-"1x1 2x1 1x2"}
 LOAD_MAX=${LOAD_MAX:-0.7}
 LOAD_WAIT=${LOAD_WAIT:-300}
@@ -36,13 +38,16 @@ source "$here/../quiet_machine.sh"
 csv=$here/results.csv
 echo "case,particles,ranks,threads,sim_time,steps,wall_s,wall_per_sim_s,particle_steps_per_s,ppe_it_per_step,setup_ms_per_step,iterate_ms_per_step,exchange_ms_per_step,rows_shared,load1" >"$csv"
 for r in $RUNS; do
-  IFS=: read -r case dx t_end dt <<<"$r"
+  IFS=: read -r case dx t_end dt extra <<<"$r"
   sets=(--set time.end="$t_end" --set output.interval=1e9 --set solver.preconditioner='"amg"')
   [[ $dx != - ]] && sets+=(--set particles.spacing="$dx")
   [[ $dt != - ]] && sets+=(--set time.dt="$dt")
+  [[ -n $extra ]] && sets+=(--set "$extra")
+  label=$case
+  [[ -n $extra ]] && label="$case ${extra//\"/}"
   for layout in $LAYOUTS; do
     ranks=${layout%x*} threads=${layout#*x}
-    out=$work/$(echo "$case" | tr / _)_${dx}_$layout
+    out=$work/$(echo "$case" | tr / _)_${dx}${extra:+_${extra%%=*}}_$layout
     log=$out.log
     load=$(wait_quiet)
     echo "$case dx=$dx t_end=$t_end ranks=$ranks threads=$threads load=$load" >&2
@@ -50,7 +55,7 @@ for r in $RUNS; do
     OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=$threads \
       mpirun --oversubscribe --bind-to none -np "$ranks" "$isphdem" run "$root/examples/$case" \
       --out "$out" "${sets[@]}" >"$log" 2>&1 || { tail -5 "$log" >&2; exit 1; }
-    /usr/bin/python3 - "$log" "$case" "$ranks" "$threads" "$load" "$t_end" "$out/result.json" \
+    /usr/bin/python3 - "$log" "$label" "$ranks" "$threads" "$load" "$t_end" "$out/result.json" \
       >>"$csv" <<'PY'
 import json, re, sys
 log, case, ranks, threads, load, t_end, result = sys.argv[1:]

@@ -1,7 +1,7 @@
-// Coupled runs under mpirun: LIGGGHTS on its own decomposition over the ranks, the fluid
-// replicated on every rank with one PPE over them. A grain's trajectory and loads must be those
-// of the one-rank run to solver tolerance, and a script that leaves the ranks without grains must
-// stop the run, not let the fluid run alone.
+// Coupled runs under mpirun: LIGGGHTS on its own decomposition over the ranks, the fluid held by
+// every rank, its rows shared between them, one PPE over them. A grain's trajectory and loads must
+// be those of the one-rank run to solver tolerance, and a script that leaves the ranks without
+// grains must stop the run, not let the fluid run alone.
 #include <gtest/gtest.h>
 
 #include <filesystem>
