@@ -143,19 +143,17 @@ std::string IsphSolver<Dim>::describe_fastest() const {
     if (P.kind[i] != kWall && P.kind[i] != kSolid && (fast < 0 || P.v[i].norm() > P.v[fast].norm()))
       fast = i;
   if (fast < 0) return "no moving particle";
-  if (fast < first_ || fast >= last_)  // its neighbour list was built by another process
-    return std::string("the fastest is particle ") + std::to_string(P.id[fast]) + " at " +
-           format_vector(P.x[fast]) + " m (" + format_number(P.v[fast].norm(), 4) + " m/s)";
+  static const char* const names[] = {"fluid", "wall", "solid (PMS)", "forcing-zone"};
+  const std::string fastest = std::string("the fastest is ") + names[P.kind[fast]] + " particle " +
+                              std::to_string(P.id[fast]) + " at " + format_vector(P.x[fast]) +
+                              " m (" + format_number(P.v[fast].norm(), 4) + " m/s)";
+  if (fast < first_ || fast >= last_) return fastest;  // its neighbours were listed elsewhere
   // The neighbour list is the step's own (built before the particles moved): what the fastest
   // particle's equations saw. A fluid particle whose support is mostly solid sits in a pocket
   // between bodies (the semi-resolved erosion runs broke up from one).
-  static const char* const names[] = {"fluid", "wall", "solid (PMS)", "forcing-zone"};
   int count[4] = {0, 0, 0, 0};
   for (int k = nb_.begin(fast); k < nb_.end(fast); ++k) ++count[P.kind[nb_.index[k]]];
-  return std::string("the fastest is ") + names[P.kind[fast]] + " particle " +
-         std::to_string(P.id[fast]) + " at " + format_vector(P.x[fast]) + " m (" +
-         format_number(P.v[fast].norm(), 4) + " m/s) with " +
-         std::to_string(count[kFluid] + count[kForcing]) + " fluid, " +
+  return fastest + " with " + std::to_string(count[kFluid] + count[kForcing]) + " fluid, " +
          std::to_string(count[kSolid]) + " solid and " + std::to_string(count[kWall]) +
          " wall neighbours";
 }

@@ -158,8 +158,10 @@ class IsphSolver {
   // grad p of the last step at the given rows (storage order), on every process: with shared
   // rows only the process that computed a row holds its neighbour list (neighbors()).
   std::vector<Vec<Dim>> pressure_gradient_at(const std::vector<int>& rows) const;
-  // Whether the last step was computed in shared blocks of rows.
+  // Whether the last step was computed in shared blocks of rows, and between how many processes
+  // they may be shared (1 without share_rows).
   bool rows_shared() const { return blocked_; }
+  int row_parts() const { return share_->parts(); }
 
  private:
   // The stages of step(), in order, each in the file named.

@@ -258,7 +258,7 @@ class AmgSolver : public LinearSolver {
     if (ranks_ == 1) return b.norm();
     const int n = static_cast<int>(b.size());
     const int first = block_start(n, rank_);
-    return sum_over_ranks(b.segment(first, block_start(n, rank_ + 1) - first).squaredNorm());
+    return norm_from_squares(b.segment(first, block_start(n, rank_ + 1) - first).squaredNorm());
   }
   double residual_of_blocks(const SparseMatrix& A, const Eigen::VectorXd& b,
                             const Eigen::VectorXd& x) const {
@@ -266,9 +266,10 @@ class AmgSolver : public LinearSolver {
     const int n = static_cast<int>(b.size());
     const int first = block_start(n, rank_), m = block_start(n, rank_ + 1) - first;
     const Eigen::VectorXd r = b.segment(first, m) - A.middleRows(first, m) * x;
-    return sum_over_ranks(r.squaredNorm());
+    return norm_from_squares(r.squaredNorm());
   }
-  double sum_over_ranks(double squares) const {
+  // sqrt of the sum over the ranks of their squared norms.
+  double norm_from_squares(double squares) const {
     MPI_Allreduce(MPI_IN_PLACE, &squares, 1, MPI_DOUBLE, MPI_SUM, comm_);
     return std::sqrt(squares);
   }

@@ -55,26 +55,19 @@ for r in $RUNS; do
     OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=$threads \
       mpirun --oversubscribe --bind-to none -np "$ranks" "$isphdem" run "$root/examples/$case" \
       --out "$out" "${sets[@]}" >"$log" 2>&1 || { tail -5 "$log" >&2; exit 1; }
-    /usr/bin/python3 - "$log" "$label" "$ranks" "$threads" "$load" "$t_end" "$out/result.json" \
-      >>"$csv" <<'PY'
-import json, re, sys
-log, case, ranks, threads, load, t_end, result = sys.argv[1:]
-text = open(log).read()
-m = re.search(r"particles: (\d+) fluid, (\d+) wall", text) or \
-    re.search(r"fluid: (\d+) fluid, (\d+) wall particles", text)
-n = int(m[1]) + int(m[2])
-steps = int(re.search(r"in (\d+) (?:fluid )?steps", text)[1])
-res = json.load(open(result))
-wall = res["wall_seconds"]  # the summary line rounds it
-shared = "yes" if res.get("rows_shared") else "no"
-ex = re.search(r"exchanges ([\d.e+-]+) ms/step", text)
-exchange = float(ex[1]) if ex else 0.0
-its = float(re.search(r"([\d.]+) PPE iterations/step", text)[1])
-setup, iterate = map(float, re.search(r"setup ([\d.e+]+) ms/step, iterations ([\d.e+]+) ms/step",
-                                      text).groups())
-t = float(t_end)
+    /usr/bin/python3 - "$here" "$log" "$label" "$ranks" "$threads" "$load" "$t_end" \
+      "$out/result.json" >>"$csv" <<'PY'
+import sys
+sys.dont_write_bytecode = True  # nothing written into bench/mpi/
+sys.path.insert(0, sys.argv[1])
+import run_summary
+log, case, ranks, threads, load, t_end, result = sys.argv[2:]
+r = run_summary.read(log, result)
+n, steps, wall, t = r["particles"], r["steps"], r["wall_s"], float(t_end)
+shared = "yes" if r["rows_shared"] else "no"
 print(f"{case},{n},{ranks},{threads},{t},{steps},{wall:.4g},{wall / t:.4g},"
-      f"{n * steps / wall:.4g},{its},{setup:.4g},{iterate:.4g},{exchange:.3g},{shared},{load}")
+      f"{n * steps / wall:.4g},{r['ppe_it']},{r['setup_ms']:.4g},{r['iterate_ms']:.4g},"
+      f"{r['exchange_ms']:.3g},{shared},{load}")
 PY
     tail -1 "$csv" >&2
   done

@@ -48,17 +48,14 @@ print(dx, dt, 10 * dt)")
     "$root/examples/taylor_green_2d/case.toml" --out "$work/tg_$p" --set particles.spacing="$dx" \
     --set time.dt="$dt" --set time.end="$t_end" --set output.interval=1e9 \
     --set solver.preconditioner='"amg"' >"$log" 2>&1 || { tail -5 "$log" >&2; exit 1; }
-  /usr/bin/python3 - "$log" "$p" >>"$ppe" <<'PY'
-import re, sys
-text = open(sys.argv[1]).read()
-m = re.search(r"particles: (\d+) fluid, (\d+) wall", text)
-steps = int(re.search(r"in (\d+) steps", text)[1])
-its = float(re.search(r"([\d.]+) PPE iterations/step", text)[1])
-setup, iterate = map(float, re.search(r"setup ([\d.e+]+) ms/step, iterations ([\d.e+]+) ms/step",
-                                      text).groups())
-wall = re.search(r"done: .* steps, ([\d.]+)s wall", text)
-print(f"{sys.argv[2]},{int(m[1]) + int(m[2])},{its},{setup:.4g},{iterate:.4g},"
-      f"{1e3 * float(wall[1]) / steps if wall else float('nan'):.4g}")
+  /usr/bin/python3 - "$here" "$log" "$p" "$work/tg_$p/result.json" >>"$ppe" <<'PY'
+import sys
+sys.dont_write_bytecode = True  # nothing written into bench/mpi/
+sys.path.insert(0, sys.argv[1])
+import run_summary
+r = run_summary.read(sys.argv[2], sys.argv[4])
+print(f"{sys.argv[3]},{r['particles']},{r['ppe_it']},{r['setup_ms']:.4g},{r['iterate_ms']:.4g},"
+      f"{1e3 * r['wall_s'] / r['steps']:.4g}")
 PY
   tail -1 "$ppe" >&2
 done

@@ -175,7 +175,7 @@ int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
   const bool finished = run_to_end(run, settings, 1e-12, after_step, snapshot, progress, rank == 0,
                                    args.out, why, cause);
   report.cost(solver.time(), solver.steps(), long(P.size()), omp_get_wtime() - start, ppe_total);
-  report.parallel(solver.rows_shared());
+  report.parallel(solver.row_parts(), solver.rows_shared());
   if (!finished) {
     report.stopped(why, cause);
     return 1;
@@ -415,7 +415,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
                                    args.out, why, cause);
   backend.finalize();
   report.cost(solver.time(), solver.steps(), long(P.size()), omp_get_wtime() - start, ppe_total);
-  report.parallel(solver.rows_shared());
+  report.parallel(solver.row_parts(), solver.rows_shared());
   if (!finished) {
     report.stopped(why, cause);
     return 1;

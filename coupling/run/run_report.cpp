@@ -1,7 +1,5 @@
 #include "run/run_report.hpp"
 
-#include <mpi.h>
-
 #include <cmath>
 #include <cstdio>
 
@@ -32,10 +30,8 @@ void RunReport::cost(double time, long steps, long particles, double wall, long 
   result_.ppe_iterations_per_step = steps > 0 ? double(ppe) / double(steps) : 0.0;
 }
 
-void RunReport::parallel(bool rows_shared) {
-  int mpi = 0;
-  MPI_Initialized(&mpi);
-  if (mpi) MPI_Comm_size(MPI_COMM_WORLD, &result_.ranks);
+void RunReport::parallel(int ranks, bool rows_shared) {
+  result_.ranks = ranks;
   result_.rows_shared = rows_shared;
 }
 

@@ -20,8 +20,8 @@ class RunReport {
   // CaseError before the first step when a metric reads a column this run does not write.
   void check_columns(const std::vector<std::string>& columns) const;
   void cost(double time, long steps, long particles, double wall_seconds, long ppe_iterations);
-  // The ranks of MPI_COMM_WORLD, and whether the fluid's rows were shared between them.
-  void parallel(bool rows_shared);
+  // The ranks the run's fluid was on, and whether its rows were shared between them.
+  void parallel(int ranks, bool rows_shared);
   void stopped(const std::string& why, const std::string& cause);
   void error(const std::string& why);
 

@@ -7,8 +7,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace isphdem::cli {
@@ -51,6 +54,31 @@ inline std::filesystem::path scratch(const std::string& name) {
 
 inline void write_file(const std::filesystem::path& p, const std::string& text) {
   std::ofstream(p) << text;
+}
+
+inline std::string read_file(const std::filesystem::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(f), {});
+}
+
+using Edits = std::vector<std::pair<std::string, std::string>>;
+
+// A copy of examples/NAME in scratch(SCRATCH_NAME) whose in.liggghts has each `from` replaced by
+// its `to` (std::runtime_error if one is missing).
+inline std::filesystem::path edited_example(const std::string& scratch_name,
+                                            const std::string& name, const Edits& edits) {
+  const auto dir = scratch(scratch_name);
+  for (const auto& e : std::filesystem::directory_iterator(
+           std::filesystem::path(ISPHDEM_SOURCE_DIR) / "examples" / name))
+    if (e.is_regular_file()) std::filesystem::copy_file(e.path(), dir / e.path().filename());
+  std::string script = read_file(dir / "in.liggghts");
+  for (const auto& [from, to] : edits) {
+    const auto at = script.find(from);
+    if (at == std::string::npos) throw std::runtime_error("'" + from + "' not in " + name);
+    script.replace(at, from.size(), to);
+  }
+  write_file(dir / "in.liggghts", script);
+  return dir;
 }
 
 inline std::string example(const std::string& name) {

@@ -4,8 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
 #include <numeric>
 #include <string>
 #include <utility>
@@ -53,8 +51,7 @@ inline std::pair<std::filesystem::path, std::filesystem::path> run_on_one_and_ma
         mpirun_run(np, example(name) + " --out " + (dir / sub).string() + tight + args);
     EXPECT_EQ(r.exit_code, 0) << r.output;
   }
-  std::ifstream json(dir / "npN" / "result.json");
-  const std::string result((std::istreambuf_iterator<char>(json)), {});
+  const std::string result = read_file(dir / "npN" / "result.json");
   EXPECT_NE(result.find("\"ranks\": " + std::to_string(ranks())), std::string::npos) << result;
   EXPECT_NE(result.find("\"rows_shared\": true"), std::string::npos) << result;
   return {last_snapshot(dir / "np1"), last_snapshot(dir / "npN")};

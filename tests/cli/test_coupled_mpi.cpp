@@ -4,12 +4,6 @@
 // grains must stop the run, not let the fluid run alone.
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <utility>
-#include <vector>
-
 #include "mpi_support.hpp"
 
 namespace isphdem::cli {
@@ -66,22 +60,11 @@ TEST(CoupledMpi, GrainLeavingOnRankOneStopsEveryRankWithItsMessage) {
   // The settling grain in a box cut off 3 mm above it, split in y over the 2 ranks
   // (`processors 1 2 1`: rank 1 holds the upper half, the grain's), rising at 0.3 m/s: it leaves
   // the box after about 10 ms and LIGGGHTS drops it silently on rank 1.
-  const auto dir = scratch("coupled_mpi_grain_lost");
-  const auto source = std::filesystem::path(ISPHDEM_SOURCE_DIR) / "examples" / "settling_grain";
-  for (const auto& e : std::filesystem::directory_iterator(source))
-    if (e.is_regular_file()) std::filesystem::copy_file(e.path(), dir / e.path().filename());
-  std::ifstream in(dir / "in.liggghts");
-  std::string script((std::istreambuf_iterator<char>(in)), {});
-  const std::vector<std::pair<std::string, std::string>> edits{
-      {"region          box", "processors      1 2 1\nregion          box"},
-      {"box block 0 0.02 -0.01 0.11", "box block 0 0.02 -0.01 0.083"},
-      {"run             0", "velocity all set 0.0 0.3 0.0\nrun 0"}};
-  for (const auto& [from, to] : edits) {
-    const auto at = script.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    script.replace(at, from.size(), to);
-  }
-  write_file(dir / "in.liggghts", script);
+  const auto dir =
+      edited_example("coupled_mpi_grain_lost", "settling_grain",
+                     {{"region          box", "processors      1 2 1\nregion          box"},
+                      {"box block 0 0.02 -0.01 0.11", "box block 0 0.02 -0.01 0.083"},
+                      {"run             0", "velocity all set 0.0 0.3 0.0\nrun 0"}});
   const Result r = mpirun_run(2, (dir / "case.toml").string() + " --out " + (dir / "out").string() +
                                      " --set time.end=0.05 --set output.interval=0.005");
   std::printf("%s", r.output.c_str());

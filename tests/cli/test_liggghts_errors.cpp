@@ -20,31 +20,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(f), {});
-}
-
-using Edits = std::vector<std::pair<std::string, std::string>>;
-
 // A copy of examples/NAME whose in.liggghts has each `from` replaced by its `to`.
 fs::path broken_example(const std::string& test, const std::string& name, const Edits& edits) {
-  const auto dir = scratch("liggghts_errors_" + test);
-  for (const auto& e : fs::directory_iterator(fs::path(ISPHDEM_SOURCE_DIR) / "examples" / name))
-    if (e.is_regular_file()) fs::copy_file(e.path(), dir / e.path().filename());
-  std::string script = read(dir / "in.liggghts");
-  for (const auto& [from, to] : edits) {
-    const auto at = script.find(from);
-    if (at == std::string::npos) throw std::runtime_error("'" + from + "' not in " + name);
-    script.replace(at, from.size(), to);
-  }
-  write_file(dir / "in.liggghts", script);
-  return dir;
+  return edited_example("liggghts_errors_" + test, name, edits);
 }
 
 // The screen file holds printable text only, and its last line is LIGGGHTS's ERROR line.
 void expect_clean_screen(const fs::path& screen, const std::string& error) {
-  const std::string text = read(screen);
+  const std::string text = read_file(screen);
   ASSERT_FALSE(text.empty()) << screen;
   int stray = 0;
   for (unsigned char c : text) stray += !(c == '\n' || c == '\t' || (c >= 0x20 && c < 0x7f));
@@ -67,7 +50,7 @@ void expect_valid_snapshots(const fs::path& out, int at_least) {
     EXPECT_GT(x.dims[0], 0u) << f;
   }
   EXPECT_GE(static_cast<int>(on_disk.size()), at_least);
-  const std::string xdmf = read(out / "fluid.xdmf");
+  const std::string xdmf = read_file(out / "fluid.xdmf");
   std::set<std::string> named;
   // Every "snap_<digits>.h5" the XDMF names (std::regex drew -Wmaybe-uninitialized from
   // libstdc++ in the sanitizer build).
