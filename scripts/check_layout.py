@@ -26,7 +26,7 @@ ALLOWED = {
     "liggghts_fix": {"LIGGGHTS", "MPI"},
     "coupling": {"sph"},  # the seam: DemState and the CouplingStage interface
     "case": {"sph"},
-    "io": {"coupling", "sph"},
+    "io": {"coupling", "sph", "MPI"},  # snapshots written by the ranks together (parallel HDF5)
     "dem": {"coupling", "liggghts_fix", "LIGGGHTS", "MPI", "sph"},
     "unresolved": {"coupling", "case", "sph"},
     "resolved": {"coupling", "case", "sph"},

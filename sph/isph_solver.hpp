@@ -162,6 +162,12 @@ class IsphSolver {
   // they may be shared (1 without share_rows).
   bool rows_shared() const { return blocked_; }
   int row_parts() const { return share_->parts(); }
+  // This process's block of the present rows (all of them on one process): the part of every
+  // per-particle output it writes, so that the processes' parts in order are the storage order.
+  std::pair<std::size_t, std::size_t> own_block() const {
+    const int n = static_cast<int>(particles_.size());
+    return {static_cast<std::size_t>(share_->first(n)), static_cast<std::size_t>(share_->last(n))};
+  }
 
  private:
   // The stages of step(), in order, each in the file named.

@@ -9,6 +9,17 @@ Vec3 lookup(const std::map<int, Vec3>& m, int key) {
 }
 }  // namespace
 
+HydroLoads hydro_loads(const DemLoads& l) {
+  HydroLoads hydro;
+  for (std::size_t k = 0; k < l.atom_tags.size(); ++k)
+    hydro.atom_force[l.atom_tags[k]] = l.atom_force[k];
+  for (std::size_t k = 0; k < l.body_ids.size(); ++k) {
+    hydro.body_force[l.body_ids[k]] = l.body_force[k];
+    hydro.body_torque[l.body_ids[k]] = l.body_torque[k];
+  }
+  return hydro;
+}
+
 void add_dem_groups(const DemState& state, const HydroLoads& loads, Snapshot& snapshot,
                     const GrainModels* models) {
   const auto& A = state.atoms;

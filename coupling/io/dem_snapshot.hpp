@@ -2,6 +2,7 @@
 // Fills the /dem and /bodies groups of the output contract from a DEM state.
 #include <map>
 
+#include "coupling_stage.hpp"
 #include "dem_state.hpp"
 #include "io/snapshot.hpp"
 
@@ -12,6 +13,9 @@ struct HydroLoads {
   std::map<int, Vec3> atom_force;
   std::map<int, Vec3> body_force, body_torque;
 };
+
+// The loads a coupled step handed the DEM, keyed for the snapshot.
+HydroLoads hydro_loads(const DemLoads& loads);
 
 // /dem/model per atom, by whether it belongs to a clump: 1 resolved (PMS particles), 0
 // unresolved (porosity and drag).

@@ -11,6 +11,8 @@
 
 #include "io/atomic_file.hpp"
 #include "io/hdf5_handle.hpp"
+#include "io/rank_agreement.hpp"
+#include "io/snapshot_layout.hpp"
 
 namespace isphdem {
 
@@ -107,39 +109,82 @@ void write_scalar_attribute(hid_t file, const char* name, T value, const std::st
   h5::check(H5Awrite(attr.id(), H5Types<T>::memory(), &value), context, "write " + what);
 }
 
-void write_dataset(hid_t group, const std::string& path, const Dataset& d,
-                   const std::string& context) {
-  const hsize_t dims[2] = {d.rows, d.cols};
-  const int rank = d.cols == 1 ? 1 : 2;
-  h5::Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose, context,
-                   "create dataspace for dataset " + path);
-  std::visit(
-      [&](const auto& values) {
-        using T = typename std::decay_t<decltype(values)>::value_type;
-        h5::Handle set(H5Dcreate2(group, d.name.c_str(), H5Types<T>::file(), space.id(),
-                                  H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                       H5Dclose, context, "create dataset " + path);
-        // HDF5 rejects a null buffer even for zero elements, and there is nothing to write.
-        if (!values.empty())
-          h5::check(H5Dwrite(set.id(), H5Types<T>::memory(), H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                             values.data()),
-                    context, "write dataset " + path);
-        set.close(context, "close dataset " + path);
-      },
-      d.data);
+hid_t file_type(std::size_t type) {
+  return type == 0   ? H5Types<double>::file()
+         : type == 1 ? H5Types<std::int64_t>::file()
+                     : H5Types<std::int32_t>::file();
 }
 
-void write_hdf5(const fs::path& tmp, const Snapshot& s, const std::string& context) {
+hid_t memory_type(std::size_t type) {
+  return type == 0   ? H5Types<double>::memory()
+         : type == 1 ? H5Types<std::int64_t>::memory()
+                     : H5Types<std::int32_t>::memory();
+}
+
+// Array k of `g`: the whole dataset, of which this rank writes its rows from g.offset on. With
+// several ranks every rank takes part in the write (collective transfer), also with no rows.
+void write_dataset(hid_t group, const std::string& path, const GroupLayout& g, std::size_t k,
+                   hid_t transfer, bool parallel, const std::string& context) {
+  const ArrayShape& a = g.arrays[k];
+  const Dataset* mine = g.local ? &g.local->datasets[k] : nullptr;
+  const hsize_t rows = mine ? mine->rows : 0;
+  const hsize_t dims[2] = {g.total, a.cols}, local_dims[2] = {rows, a.cols};
+  const int rank = a.cols == 1 ? 1 : 2;
+  h5::Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose, context,
+                   "create dataspace for dataset " + path);
+  h5::Handle set(H5Dcreate2(group, a.name.c_str(), file_type(a.type), space.id(), H5P_DEFAULT,
+                            H5P_DEFAULT, H5P_DEFAULT),
+                 H5Dclose, context, "create dataset " + path);
+  // HDF5 rejects a null buffer even for zero elements.
+  static const double nothing = 0.0;
+  const void* data = &nothing;
+  if (mine && rows > 0)
+    data = std::visit([](const auto& v) { return static_cast<const void*>(v.data()); }, mine->data);
+  // An empty dataset has no storage to write to (HDF5 fails on it, also with nothing selected).
+  if (parallel && g.total > 0) {
+    h5::Handle memory(H5Screate_simple(rank, local_dims, nullptr), H5Sclose, context,
+                      "create memory dataspace for dataset " + path);
+    const hsize_t start[2] = {g.offset, 0};
+    if (rows == 0) {
+      h5::check(H5Sselect_none(space.id()), context, "select no rows of dataset " + path);
+      h5::check(H5Sselect_none(memory.id()), context, "select no rows for dataset " + path);
+    } else {
+      h5::check(
+          H5Sselect_hyperslab(space.id(), H5S_SELECT_SET, start, nullptr, local_dims, nullptr),
+          context, "select this rank's rows of dataset " + path);
+    }
+    h5::check(H5Dwrite(set.id(), memory_type(a.type), memory.id(), space.id(), transfer, data),
+              context, "write dataset " + path);
+  } else if (!parallel && rows > 0) {
+    h5::check(H5Dwrite(set.id(), memory_type(a.type), H5S_ALL, H5S_ALL, H5P_DEFAULT, data), context,
+              "write dataset " + path);
+  }
+  set.close(context, "close dataset " + path);
+}
+
+// With several ranks the file is opened by all of them through MPI-IO (parallel HDF5) and every
+// call below is collective.
+void write_hdf5(const fs::path& tmp, const SnapshotLayout& layout, MPI_Comm comm,
+                const std::string& context) {
   h5::QuietErrors quiet;
-  h5::Handle file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
+  const bool parallel = ranks_of(comm) > 1;
+  h5::Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, context, "create file access list");
+  h5::Handle transfer(H5Pcreate(H5P_DATASET_XFER), H5Pclose, context, "create transfer list");
+  if (parallel) {
+    h5::check(H5Pset_fapl_mpio(access.id(), comm, MPI_INFO_NULL), context, "use MPI-IO");
+    h5::check(H5Pset_dxpl_mpio(transfer.id(), H5FD_MPIO_COLLECTIVE), context,
+              "use collective transfers");
+  }
+  h5::Handle file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.id()), H5Fclose,
                   context, "create " + tmp.string());
-  write_scalar_attribute<double>(file.id(), "time", s.time, context);
-  write_scalar_attribute<std::int64_t>(file.id(), "step", s.step, context);
-  for (const auto& g : s.groups) {
+  write_scalar_attribute<double>(file.id(), "time", layout.time, context);
+  write_scalar_attribute<std::int64_t>(file.id(), "step", layout.step, context);
+  for (const auto& g : layout.groups) {
     h5::Handle group(H5Gcreate2(file.id(), g.name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                      H5Gclose, context, "create group /" + g.name);
-    for (const auto& d : g.datasets)
-      write_dataset(group.id(), "/" + g.name + "/" + d.name, d, context);
+    for (std::size_t k = 0; k < g.arrays.size(); ++k)
+      write_dataset(group.id(), "/" + g.name + "/" + g.arrays[k].name, g, k, transfer.id(),
+                    parallel, context);
     group.close(context, "close group /" + g.name);
   }
   file.close(context, "close (flush) file");
@@ -223,7 +268,15 @@ std::string SnapshotWriter::file_name(long step) {
   return buf;
 }
 
-SnapshotWriter::SnapshotWriter(fs::path dir, bool fresh) : dir_(std::move(dir)) {
+SnapshotWriter::SnapshotWriter(fs::path dir, bool fresh, MPI_Comm comm)
+    : dir_(std::move(dir)), comm_(comm), lead_(rank_in(comm) == 0) {
+  // Rank 0 alone prepares the directory; the others learn whether it could.
+  agree(comm_, [&] {
+    if (lead_) prepare(fresh);
+  });
+}
+
+void SnapshotWriter::prepare(bool fresh) {
   std::error_code ec;
   if (fs::exists(dir_, ec) && !fs::is_directory(dir_, ec))
     throw std::runtime_error("output directory " + dir_.string() +
@@ -277,36 +330,42 @@ void SnapshotWriter::update_xdmf(const std::string& group) {
 }
 
 fs::path SnapshotWriter::write(const Snapshot& snapshot) {
-  validate(snapshot);
-  if (!written_) drop_steps_after(snapshot.step);
+  agree(comm_, [&] { validate(snapshot); });
+  const SnapshotLayout layout = lay_out(snapshot, comm_);
+  if (!written_)
+    agree(comm_, [&] {
+      if (lead_) drop_steps_after(layout.step);
+    });
   written_ = true;
 
-  const std::string name = file_name(snapshot.step);
+  const std::string name = file_name(layout.step);
   const fs::path target = dir_ / name;
   const fs::path tmp = temporary_path_for(target);
   const std::string context = "writing " + target.string();
   try {
-    write_hdf5(tmp, snapshot, context);
+    agree(comm_, [&] { write_hdf5(tmp, layout, comm_, context); });
   } catch (...) {
     std::error_code ignored;
-    fs::remove(tmp, ignored);
+    if (lead_) fs::remove(tmp, ignored);
     throw;
   }
-  std::error_code ec;
-  fs::rename(tmp, target, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw std::runtime_error(context + ": cannot rename " + tmp.string() + ": " + ec.message());
-  }
-
-  std::set<std::string> touched;
-  for (auto& [group, steps] : index_)
-    if (steps.erase(snapshot.step)) touched.insert(group);  // the file there was just replaced
-  for (const auto& g : snapshot.groups) {
-    index_[g.name][snapshot.step] = describe_step(snapshot, g, name);
-    touched.insert(g.name);
-  }
-  for (const auto& group : touched) update_xdmf(group);
+  agree(comm_, [&] {
+    if (!lead_) return;
+    std::error_code ec;
+    fs::rename(tmp, target, ec);
+    if (ec) {
+      fs::remove(tmp, ec);
+      throw std::runtime_error(context + ": cannot rename " + tmp.string() + ": " + ec.message());
+    }
+    std::set<std::string> touched;
+    for (auto& [group, steps] : index_)
+      if (steps.erase(layout.step)) touched.insert(group);  // the file there was just replaced
+    for (const auto& g : layout.groups) {
+      index_[g.name][layout.step] = describe_layout(layout, g, name);
+      touched.insert(g.name);
+    }
+    for (const auto& group : touched) update_xdmf(group);
+  });
   return target;
 }
 

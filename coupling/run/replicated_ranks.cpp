@@ -3,8 +3,10 @@
 #include <mpi.h>
 
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <string>
+#include <thread>
 
 #include "format_number.hpp"
 #include "isph_solver.hpp"
@@ -52,6 +54,25 @@ void write_on_rank_zero(int rank, const std::function<void()>& write) {
                  "isphdem run: rank 0 could not write the output: %s\n"
                  "  stopping all %d ranks; the snapshots written before are complete.\n",
                  e.what(), ranks);
+    MPI_Abort(MPI_COMM_WORLD, 2);
+  }
+}
+
+void write_collectively(int rank, const std::function<void()>& write) {
+  try {
+    write();
+  } catch (const std::exception& e) {
+    int ranks = 1;
+    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+    if (ranks == 1) throw;
+    // The writer throws one message on every rank; rank 0 says it. A rank that failed alone
+    // (before the writer could agree) says its own after a grace period for rank 0's abort.
+    if (rank != 0) std::this_thread::sleep_for(std::chrono::seconds(2));
+    std::fprintf(stderr,
+                 "isphdem run: could not write the output: %s\n"
+                 "  stopping all %d ranks; the snapshots written before are complete.\n",
+                 e.what(), ranks);
+    std::fflush(stderr);
     MPI_Abort(MPI_COMM_WORLD, 2);
   }
 }

@@ -1,10 +1,12 @@
 #pragma once
 // `isphdem run` on several MPI ranks, as it is today: every rank holds the whole fluid and steps
-// it alike (only the pressure equation is one system over the ranks, sph_petsc/), and rank 0
-// writes the output. Two things follow: the copies must stay identical, or each rank would enter
-// its rows of the pressure system from a different flow (checked at every snapshot: a cheap sum
-// of positions, velocities and pressures compared bit for bit); and a failure of rank 0's output
-// must stop the other ranks, which are already waiting for it in the next pressure solve.
+// it alike, each computing its block of rows (sph/row_share.hpp; the pressure equation is one
+// system over the ranks, sph_petsc/). The ranks write each snapshot together, each its block of
+// rows (io/snapshot_writer.hpp); rank 0 writes diagnostics.csv. Two things follow: the copies
+// must stay identical, or each rank would enter its rows of the pressure system from a different
+// flow (checked at every snapshot: a cheap sum of positions, velocities and pressures compared
+// bit for bit); and a failure of the output must stop every rank, not leave the others waiting
+// in the next pressure solve.
 #include <functional>
 
 #include "particles.hpp"
@@ -20,5 +22,10 @@ void check_replicas(const isph::Particles<Dim>& particles, long step);
 // MPI_Abort stops every rank (the snapshots written before stay complete); on one rank the
 // exception goes on to the caller as usual.
 void write_on_rank_zero(int rank, const std::function<void()>& write);
+
+// Runs `write` (a collective snapshot write) on every rank. If it throws on several ranks, rank 0
+// prints the message and MPI_Abort stops every rank; on one rank the exception goes on to the
+// caller as usual.
+void write_collectively(int rank, const std::function<void()>& write);
 
 }  // namespace isphdem

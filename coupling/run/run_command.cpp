@@ -98,7 +98,8 @@ bool run_to_end(Run& run, const RunSettings& settings, double end_tolerance,
 
 // A fluid-only case. On several ranks (mpirun) every rank holds all particles and steps them
 // alike; the pressure equation is one system over the ranks (solver.preconditioner = "amg"), and
-// rank 0 writes the output and talks.
+// the ranks write each snapshot together (each its block of rows); rank 0 talks and writes
+// diagnostics.csv.
 template <int Dim>
 int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
   int rank = 0;
@@ -130,10 +131,9 @@ int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
       "max_speed",      "dt",           "ppe_residual",      "surface_particles",
       "kinetic_energy", "fluid_volume", "max_eddy_viscosity"};
   report.check_columns(columns);  // before the writer clears an earlier run's output
-  std::unique_ptr<SnapshotWriter> writer;
+  SnapshotWriter writer(args.out, true, MPI_COMM_WORLD);
   std::unique_ptr<DiagnosticsWriter> diagnostics;
   if (rank == 0) {
-    writer = std::make_unique<SnapshotWriter>(args.out);
     // The case as run, overrides applied, next to the results.
     std::ofstream f(args.out / "case_used.toml");
     f << "# " << c.path().string() << " with the overrides of this run\n" << c.table() << "\n";
@@ -141,12 +141,13 @@ int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
   }
   auto snapshot = [&]() {
     check_replicas(P, solver.steps());
-    write_on_rank_zero(rank, [&] {
+    write_collectively(rank, [&] {
       Snapshot s;
       s.step = solver.steps();
       s.time = solver.time();
-      add_fluid_group(solver.particles(), s);
-      writer->write(s);
+      const auto [first, last] = solver.own_block();
+      add_fluid_group(P, s, first, last);
+      writer.write(s);
     });
   };
 
@@ -223,7 +224,8 @@ DemCaseConfig dem_config(const CaseFile& c) {
 }
 
 // A case with [fluid] and [dem]: fine grains (free spheres) coupled unresolved. The fluid is
-// replicated on every rank (the DEM state is gathered to all); rank 0 writes the output.
+// replicated on every rank (the DEM state is gathered to all); the ranks write each snapshot
+// together, the grains from rank 0.
 template <int Dim>
 int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report) {
   int rank = 0;
@@ -325,10 +327,9 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   const ErosionDiagnostics<Dim> erosion(
       backend.state(), up, c.has("inflow.velocity") ? std::abs(c.number("inflow.velocity")) : 1.0,
       grain_density);
-  std::unique_ptr<SnapshotWriter> writer;
+  SnapshotWriter writer(args.out, true, MPI_COMM_WORLD);
   std::unique_ptr<DiagnosticsWriter> diagnostics;
   if (rank == 0) {
-    writer = std::make_unique<SnapshotWriter>(args.out);
     std::ofstream f(args.out / "case_used.toml");
     f << "# " << c.path().string() << " with the overrides of this run\n" << c.table() << "\n";
     diagnostics = std::make_unique<DiagnosticsWriter>(args.out / "diagnostics.csv", columns);
@@ -336,21 +337,14 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   auto snapshot = [&]() {
     const DemState& state = backend.state();  // collective
     check_replicas(P, solver.steps());
-    if (rank != 0) return;
     Snapshot s;
     s.step = solver.steps();
     s.time = solver.time();
-    add_fluid_group(P, s);
-    HydroLoads hydro;
-    const DemLoads& l = run.loads();
-    for (std::size_t k = 0; k < l.atom_tags.size(); ++k)
-      hydro.atom_force[l.atom_tags[k]] = l.atom_force[k];
-    for (std::size_t k = 0; k < l.body_ids.size(); ++k) {
-      hydro.body_force[l.body_ids[k]] = l.body_force[k];
-      hydro.body_torque[l.body_ids[k]] = l.body_torque[k];
-    }
-    add_dem_groups(state, hydro, s, &models);
-    write_on_rank_zero(rank, [&] { writer->write(s); });
+    const auto [first, last] = solver.own_block();
+    add_fluid_group(P, s, first, last);
+    // The grains are written by rank 0 (every rank holds the gathered DEM state).
+    if (rank == 0) add_dem_groups(state, hydro_loads(run.loads()), s, &models);
+    write_collectively(rank, [&] { writer.write(s); });
   };
   const double start = omp_get_wtime();
   ProgressLine progress(settings.t_end, talk);

@@ -3,6 +3,7 @@
 // a run on several ranks with the same run on one.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <numeric>
 #include <string>
@@ -60,6 +61,7 @@ inline std::pair<std::filesystem::path, std::filesystem::path> run_on_one_and_ma
 struct Fields {
   int dim = 0;
   std::vector<double> x, v, p;  // sorted by particle id
+  std::vector<std::int64_t> id;  // sorted
 };
 
 // The group's (fluid, dem, bodies) positions, velocities and, for the fluid, pressures, sorted
@@ -76,6 +78,7 @@ inline Fields read_fields(const std::filesystem::path& file, const std::string& 
   Fields out;
   out.dim = static_cast<int>(x.dims.at(1));
   for (const auto k : order) {
+    out.id.push_back(id.i64[k]);
     for (int d = 0; d < out.dim; ++d) {
       out.x.push_back(x.f64[k * out.dim + d]);
       out.v.push_back(v.f64[k * out.dim + d]);

@@ -26,6 +26,8 @@ void expect_same_as_one_rank(const std::string& name, const std::string& args, d
   ASSERT_EQ(a_file.filename(), b_file.filename()) << "the runs took different steps";
   const Fields a = read_fields(a_file), b = read_fields(b_file);
   ASSERT_EQ(a.p.size(), b.p.size());
+  // The ranks wrote the file together, each its rows: every particle once.
+  EXPECT_EQ(a.id, b.id);
   const double dxs = max_difference(a.x, b.x, period) / dx;
   const double dv = max_difference(a.v, b.v) / speed;
   const double dp = max_difference(a.p, b.p) / max_abs(a.p);

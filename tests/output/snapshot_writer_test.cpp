@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <thread>
 
+#include "expect_file_holds.hpp"
 #include "h5_read.hpp"
 #include "mini_xml.hpp"
 #include "output_test_support.hpp"
@@ -22,38 +23,11 @@ namespace {
 using isphdem::Dataset;
 using isphdem::Snapshot;
 using isphdem::SnapshotWriter;
+using output_test::expect_file_holds;
 using output_test::file_names;
 using output_test::sample;
 using output_test::scratch_dir;
 namespace fs = std::filesystem;
-
-// Every dataset of `s` is in the file with the same dtype, shape and values.
-void expect_file_holds(const fs::path& path, const Snapshot& s) {
-  h5_read::File f(path.string());
-  EXPECT_EQ(f.attribute_f64("time"), s.time);
-  EXPECT_EQ(f.attribute_i64("step"), s.step);
-  for (const auto& g : s.groups) {
-    for (const auto& d : g.datasets) {
-      const std::string where = "/" + g.name + "/" + d.name;
-      SCOPED_TRACE(where);
-      const h5_read::Array a = f.read(where);
-      if (d.cols == 1)
-        EXPECT_EQ(a.dims, (std::vector<hsize_t>{d.rows}));
-      else
-        EXPECT_EQ(a.dims, (std::vector<hsize_t>{d.rows, d.cols}));
-      if (auto* v = std::get_if<std::vector<double>>(&d.data)) {
-        EXPECT_EQ(a.type, h5_read::Type::f64);
-        EXPECT_EQ(a.f64, *v);
-      } else if (auto* v = std::get_if<std::vector<std::int64_t>>(&d.data)) {
-        EXPECT_EQ(a.type, h5_read::Type::i64);
-        EXPECT_EQ(a.i64, *v);
-      } else if (auto* v = std::get_if<std::vector<std::int32_t>>(&d.data)) {
-        EXPECT_EQ(a.type, h5_read::Type::i32);
-        EXPECT_EQ(a.i32, *v);
-      }
-    }
-  }
-}
 
 // Opens every snap_*.h5 in `dir` and reads every dataset listed in fluid.xdmf from the files it
 // names; returns the number of grids in fluid.xdmf.
