@@ -42,39 +42,38 @@ void check_replicas(const isph::Particles<Dim>& P, long step) {
       "replicas");
 }
 
-void write_on_rank_zero(int rank, const std::function<void()>& write) {
-  if (rank != 0) return;
+namespace {
+
+// Runs `write`; if it throws while other ranks run, `who` prints the message and every rank is
+// stopped. On one rank the exception goes on to the caller.
+void write_or_stop_all(const std::function<void()>& write, bool speaks, const char* who) {
   try {
     write();
   } catch (const std::exception& e) {
     int ranks = 1;
     MPI_Comm_size(MPI_COMM_WORLD, &ranks);
     if (ranks == 1) throw;
+    // A rank that does not speak first gives the speaking one time to stop everything.
+    if (!speaks) std::this_thread::sleep_for(std::chrono::seconds(2));
     std::fprintf(stderr,
-                 "isphdem run: rank 0 could not write the output: %s\n"
+                 "isphdem run: %s could not write the output: %s\n"
                  "  stopping all %d ranks; the snapshots written before are complete.\n",
-                 e.what(), ranks);
+                 who, e.what(), ranks);
+    std::fflush(stderr);
     MPI_Abort(MPI_COMM_WORLD, 2);
   }
 }
 
+}  // namespace
+
+void write_on_rank_zero(int rank, const std::function<void()>& write) {
+  if (rank == 0) write_or_stop_all(write, true, "rank 0");
+}
+
 void write_collectively(int rank, const std::function<void()>& write) {
-  try {
-    write();
-  } catch (const std::exception& e) {
-    int ranks = 1;
-    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-    if (ranks == 1) throw;
-    // The writer throws one message on every rank; rank 0 says it. A rank that failed alone
-    // (before the writer could agree) says its own after a grace period for rank 0's abort.
-    if (rank != 0) std::this_thread::sleep_for(std::chrono::seconds(2));
-    std::fprintf(stderr,
-                 "isphdem run: could not write the output: %s\n"
-                 "  stopping all %d ranks; the snapshots written before are complete.\n",
-                 e.what(), ranks);
-    std::fflush(stderr);
-    MPI_Abort(MPI_COMM_WORLD, 2);
-  }
+  // The writer throws one message (naming the rank it came from) on every rank, and rank 0 says
+  // it; a rank that failed alone, before the writer could agree, says its own.
+  write_or_stop_all(write, rank == 0, "the ranks");
 }
 
 template void check_replicas<2>(const isph::Particles<2>&, long);

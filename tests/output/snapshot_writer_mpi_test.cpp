@@ -93,13 +93,22 @@ TEST(SnapshotWriterMpi, RanksPartsMakeTheFileOneProcessWrites) {
   EXPECT_EQ(output_test::file_names(dir / "ranks"), output_test::file_names(dir / "one"));
 }
 
+// The refusal tests' start: snapshot 1 written by the ranks into a fresh directory, and this
+// rank's part of snapshot 2 to spoil.
+struct AfterOneSnapshot {
+  fs::path dir = shared_scratch() / "out";
+  SnapshotWriter writer{dir, true, MPI_COMM_WORLD};
+  Snapshot next = part_of(output_test::sample(2, 0.002, 13, 2, 5, 2));
+  int last = ranks() - 1;
+  AfterOneSnapshot() { writer.write(part_of(output_test::sample(1, 0.001, 13, 2, 5, 2))); }
+};
+
 // Every rank throws `kind` with a message holding each of `parts`; afterwards the directory holds
 // the first snapshot only, complete, and no temporary file.
 template <class Kind>
-void expect_every_rank_refuses(const fs::path& dir, SnapshotWriter& writer, const Snapshot& part,
-                               const std::vector<std::string>& parts) {
+void expect_every_rank_refuses(AfterOneSnapshot& run, const std::vector<std::string>& parts) {
   try {
-    writer.write(part);
+    run.writer.write(run.next);
     ADD_FAILURE() << "rank " << rank() << " wrote a snapshot it should have refused";
   } catch (const Kind& e) {
     const std::string message = e.what();
@@ -107,60 +116,45 @@ void expect_every_rank_refuses(const fs::path& dir, SnapshotWriter& writer, cons
     for (const auto& p : parts) EXPECT_NE(message.find(p), std::string::npos) << message;
   }
   MPI_Barrier(MPI_COMM_WORLD);
-  if (rank() != 0 || !fs::exists(dir)) return;
+  if (rank() != 0 || !fs::exists(run.dir)) return;
   std::set<std::string> expected{"snap_00000001.h5", "fluid.xdmf", "dem.xdmf", "bodies.xdmf"};
-  EXPECT_EQ(output_test::file_names(dir), expected);
-  output_test::expect_file_holds(dir / "snap_00000001.h5",
+  EXPECT_EQ(output_test::file_names(run.dir), expected);
+  output_test::expect_file_holds(run.dir / "snap_00000001.h5",
                                  output_test::sample(1, 0.001, 13, 2, 5, 2));
 }
 
 TEST(SnapshotWriterMpi, PartOfAnotherShapeStopsEveryRankAndWritesNothing) {
-  const fs::path dir = shared_scratch() / "out";
-  SnapshotWriter writer(dir, true, MPI_COMM_WORLD);
-  writer.write(part_of(output_test::sample(1, 0.001, 13, 2, 5, 2)));
-  Snapshot bad = part_of(output_test::sample(2, 0.002, 13, 2, 5, 2));
-  const int last = ranks() - 1;
-  if (rank() == last) {  // pressure as two columns: fine alone, not beside rank 0's
-    auto& pressure = bad.groups.front().datasets[2];
+  AfterOneSnapshot run;
+  if (rank() == run.last) {  // pressure as two columns: fine alone, not beside rank 0's
+    auto& pressure = run.next.groups.front().datasets[2];
     pressure.cols = 2;
     std::get<std::vector<double>>(pressure.data).resize(pressure.rows * 2);
   }
   expect_every_rank_refuses<std::invalid_argument>(
-      dir, writer, bad, {"rank " + std::to_string(last), "/fluid/pressure", "rank 0's"});
+      run, {"rank " + std::to_string(run.last), "/fluid/pressure", "rank 0's"});
 }
 
 TEST(SnapshotWriterMpi, MalformedPartOnOneRankStopsEveryRank) {
-  const fs::path dir = shared_scratch() / "out";
-  SnapshotWriter writer(dir, true, MPI_COMM_WORLD);
-  writer.write(part_of(output_test::sample(1, 0.001, 13, 2, 5, 2)));
-  Snapshot bad = part_of(output_test::sample(2, 0.002, 13, 2, 5, 2));
-  const int last = ranks() - 1;
-  if (rank() == last) std::get<std::vector<double>>(bad.groups.front().datasets[2].data).pop_back();
+  AfterOneSnapshot run;
+  if (rank() == run.last)
+    std::get<std::vector<double>>(run.next.groups.front().datasets[2].data).pop_back();
   expect_every_rank_refuses<std::invalid_argument>(
-      dir, writer, bad, {"rank " + std::to_string(last), "/fluid/pressure", "values"});
+      run, {"rank " + std::to_string(run.last), "/fluid/pressure", "values"});
 }
 
 TEST(SnapshotWriterMpi, RanksOnDifferentStepsAreRefused) {
-  const fs::path dir = shared_scratch() / "out";
-  SnapshotWriter writer(dir, true, MPI_COMM_WORLD);
-  writer.write(part_of(output_test::sample(1, 0.001, 13, 2, 5, 2)));
-  Snapshot bad = part_of(output_test::sample(2, 0.002, 13, 2, 5, 2));
-  const int last = ranks() - 1;
-  if (rank() == last) bad.step = 3;
+  AfterOneSnapshot run;
+  if (rank() == run.last) run.next.step = 3;
   expect_every_rank_refuses<std::invalid_argument>(
-      dir, writer, bad, {"rank " + std::to_string(last), "step 3", "one step"});
+      run, {"rank " + std::to_string(run.last), "step 3", "one step"});
 }
 
 TEST(SnapshotWriterMpi, FailingFileSystemStopsEveryRank) {
-  const fs::path dir = shared_scratch() / "out";
-  SnapshotWriter writer(dir, true, MPI_COMM_WORLD);
-  writer.write(part_of(output_test::sample(1, 0.001, 13, 2, 5, 2)));
+  AfterOneSnapshot run;
   MPI_Barrier(MPI_COMM_WORLD);
-  if (rank() == 0) fs::remove_all(dir);  // the output directory vanishes under the run
+  if (rank() == 0) fs::remove_all(run.dir);  // the output directory vanishes under the run
   MPI_Barrier(MPI_COMM_WORLD);
-  expect_every_rank_refuses<std::runtime_error>(dir, writer,
-                                                part_of(output_test::sample(2, 0.002, 13, 2, 5, 2)),
-                                                {"rank 0", "snap_00000002.h5"});
+  expect_every_rank_refuses<std::runtime_error>(run, {"rank 0", "snap_00000002.h5"});
 }
 
 }  // namespace
