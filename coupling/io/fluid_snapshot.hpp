@@ -13,9 +13,4 @@ template <int Dim>
 void add_fluid_group(const isph::Particles<Dim>& p, Snapshot& snapshot, std::size_t first,
                      std::size_t last);
 
-template <int Dim>
-void add_fluid_group(const isph::Particles<Dim>& p, Snapshot& snapshot) {
-  add_fluid_group(p, snapshot, 0, p.size());
-}
-
 }  // namespace isphdem

@@ -124,7 +124,7 @@ hid_t memory_type(std::size_t type) {
 // Array k of `g`: the whole dataset, of which this rank writes its rows from g.offset on. With
 // several ranks every rank takes part in the write (collective transfer), also with no rows.
 void write_dataset(hid_t group, const std::string& path, const GroupLayout& g, std::size_t k,
-                   hid_t transfer, bool parallel, const std::string& context) {
+                   hid_t transfer, const std::string& context) {
   const ArrayShape& a = g.arrays[k];
   const Dataset* mine = g.local ? &g.local->datasets[k] : nullptr;
   const hsize_t rows = mine ? mine->rows : 0;
@@ -141,7 +141,8 @@ void write_dataset(hid_t group, const std::string& path, const GroupLayout& g, s
   if (mine && rows > 0)
     data = std::visit([](const auto& v) { return static_cast<const void*>(v.data()); }, mine->data);
   // An empty dataset has no storage to write to (HDF5 fails on it, also with nothing selected).
-  if (parallel && g.total > 0) {
+  // Otherwise every rank writes, its rows or none (one process: all rows from offset 0).
+  if (g.total > 0) {
     h5::Handle memory(H5Screate_simple(rank, local_dims, nullptr), H5Sclose, context,
                       "create memory dataspace for dataset " + path);
     const hsize_t start[2] = {g.offset, 0};
@@ -155,9 +156,6 @@ void write_dataset(hid_t group, const std::string& path, const GroupLayout& g, s
     }
     h5::check(H5Dwrite(set.id(), memory_type(a.type), memory.id(), space.id(), transfer, data),
               context, "write dataset " + path);
-  } else if (!parallel && rows > 0) {
-    h5::check(H5Dwrite(set.id(), memory_type(a.type), H5S_ALL, H5S_ALL, H5P_DEFAULT, data), context,
-              "write dataset " + path);
   }
   set.close(context, "close dataset " + path);
 }
@@ -184,7 +182,7 @@ void write_hdf5(const fs::path& tmp, const SnapshotLayout& layout, MPI_Comm comm
                      H5Gclose, context, "create group /" + g.name);
     for (std::size_t k = 0; k < g.arrays.size(); ++k)
       write_dataset(group.id(), "/" + g.name + "/" + g.arrays[k].name, g, k, transfer.id(),
-                    parallel, context);
+                    context);
     group.close(context, "close group /" + g.name);
   }
   file.close(context, "close (flush) file");

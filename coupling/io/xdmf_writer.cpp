@@ -3,7 +3,6 @@
 #include <charconv>
 #include <cstdint>
 #include <cstdio>
-#include <type_traits>
 
 #include "io/atomic_file.hpp"
 
@@ -83,29 +82,6 @@ void append_data_item(std::string& out, const XdmfStep& s, const XdmfArray& a, c
 bool XdmfStep::drawable() const {
   const XdmfArray* p = find_array(*this, "position");
   return rows > 0 && p && p->floating && (p->cols == 2 || p->cols == 3);
-}
-
-XdmfStep describe_step(const Snapshot& snapshot, const Group& group, std::string file) {
-  XdmfStep s;
-  s.step = snapshot.step;
-  s.time = snapshot.time;
-  s.file = std::move(file);
-  s.group = group.name;
-  s.rows = group.datasets.empty() ? 0 : group.datasets.front().rows;
-  for (const auto& d : group.datasets) {
-    XdmfArray a;
-    a.name = d.name;
-    a.cols = d.cols;
-    std::visit(
-        [&](const auto& v) {
-          using T = typename std::decay_t<decltype(v)>::value_type;
-          a.floating = std::is_floating_point_v<T>;
-          a.bytes = sizeof(T);
-        },
-        d.data);
-    s.arrays.push_back(std::move(a));
-  }
-  return s;
 }
 
 std::string xdmf_document(const std::string& name, const std::vector<XdmfStep>& steps) {

@@ -13,8 +13,6 @@
 #include <string>
 #include <vector>
 
-#include "io/snapshot.hpp"
-
 namespace isphdem {
 
 struct XdmfArray {
@@ -35,9 +33,6 @@ struct XdmfStep {
 
   bool drawable() const;  // has particles and a usable "position"
 };
-
-// The shapes of `group` in a snapshot stored in `file`.
-XdmfStep describe_step(const Snapshot& snapshot, const Group& group, std::string file);
 
 // The document for `steps` (in the given order; steps that are not drawable are skipped).
 std::string xdmf_document(const std::string& name, const std::vector<XdmfStep>& steps);
