@@ -3,9 +3,12 @@
 // default is BiCGSTAB. Backends that need MPI (PETSc + hypre AMG, sph_petsc/) live outside sph/
 // and register a factory under their preconditioner name; sph/ itself never sees MPI.
 #include <Eigen/Sparse>
+#include <cstdint>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace isph {
 
@@ -39,6 +42,17 @@ struct LinearSolverConfig {
   int setup_reuse = 1;
 };
 
+// How the rows of a decomposed system (issue 26: each process holds the particles it owns, then a
+// halo of copies of other processes' particles) make one system over all processes. Rows
+// [0, owned) of A, b and x are this process's; A's columns are local indices, owned then halo,
+// and global[j] is column j's number in the whole system, where every process's owned rows are
+// numbered after those of the processes before it (global[i] = global[0] + i for i < owned).
+struct GlobalNumbering {
+  int owned = 0;
+  int64_t total = 0;            // rows of the whole system, over all processes
+  std::vector<int64_t> global;  // per local column: owned, then halo
+};
+
 class LinearSolver {
  public:
   virtual ~LinearSolver() = default;
@@ -49,6 +63,14 @@ class LinearSolver {
   // True when this process solves only its block of rows (block_start of sph/row_share.hpp) and
   // reads no other rows of A and b; x is still returned whole.
   virtual bool distributed_rows() const { return false; }
+  // From now on solve() takes decomposed systems numbered this way (null: back to whole
+  // systems). Only x's owned rows are solved; its halo rows are left as they were, for the caller
+  // to refresh from their owners. Backends that cannot solve across processes say so.
+  virtual void number_globally(std::shared_ptr<const GlobalNumbering> /*numbering*/) {
+    throw std::invalid_argument(
+        "this pressure solver cannot solve a decomposed system: use solver.preconditioner = "
+        "\"amg\"");
+  }
 };
 
 using LinearSolverFactory = std::function<std::unique_ptr<LinearSolver>(const LinearSolverConfig&)>;

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "petsc_error.hpp"
@@ -99,9 +101,13 @@ class AmgSolver : public LinearSolver {
   SolveStats solve(const SparseMatrix& A_in, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                    double reference) override {
     SolveStats s;
+    set_layout(A_in, b, x);
     const double scale = std::max(norm_of_blocks(b), reference);
     if (scale == 0.0) {
-      x.setZero();
+      if (numbering_)
+        x.head(rows_here_).setZero();
+      else
+        x.setZero();
       s.converged = true;
       return s;
     }
@@ -112,8 +118,13 @@ class AmgSolver : public LinearSolver {
       compressed.makeCompressed();
       A = &compressed;
     }
-    const int n = static_cast<int>(A->rows());
-    const bool resized = n != size_;
+    // A decomposed rank's own row count changes with migration while the total may not.
+    bool resized = total_ != size_ || rows_.size() != static_cast<std::size_t>(rows_here_) + 1;
+    if (ranks_ > 1) {
+      int any = resized ? 1 : 0;
+      MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_MAX, comm_);
+      resized = any == 1;
+    }
     load_matrix(*A);
     // This rank's rows as BoomerAMG expects them, diagonal positive (see row_sign_).
     signed_b_ = b.segment(first_, row_sign_.size()).cwiseProduct(row_sign_);
@@ -137,29 +148,33 @@ class AmgSolver : public LinearSolver {
       s.setup_seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-    // Each rank's block of x is solved in place, then gathered, so that every rank holds the
-    // whole pressure (the particles are replicated on every rank).
+    // Each rank's rows of x are solved in place. A replicated system's blocks are then gathered,
+    // so that every rank holds the whole pressure; a decomposed one's halo is the caller's.
     const int m = static_cast<int>(row_sign_.size());
     Vec bv = nullptr, xv = nullptr;
     if (ranks_ > 1) {
-      check_petsc(VecCreateMPIWithArray(comm_, 1, m, n, signed_b_.data(), &bv), "wrapping b");
-      check_petsc(VecCreateMPIWithArray(comm_, 1, m, n, x.data() + first_, &xv), "wrapping x");
+      check_petsc(VecCreateMPIWithArray(comm_, 1, m, total_, signed_b_.data(), &bv), "wrapping b");
+      check_petsc(VecCreateMPIWithArray(comm_, 1, m, total_, x.data() + first_, &xv), "wrapping x");
     } else {
-      check_petsc(VecCreateSeqWithArray(comm_, 1, n, signed_b_.data(), &bv), "wrapping b");
-      check_petsc(VecCreateSeqWithArray(comm_, 1, n, x.data(), &xv), "wrapping x");
+      check_petsc(VecCreateSeqWithArray(comm_, 1, m, signed_b_.data(), &bv), "wrapping b");
+      check_petsc(VecCreateSeqWithArray(comm_, 1, m, x.data(), &xv), "wrapping x");
     }
-    const PetscErrorCode solved = KSPSolve(ksp_.h, bv, xv);
+    PetscErrorCode solved = KSPSolve(ksp_.h, bv, xv);
+    // The halo's x may be stale here, so the true residual of a decomposed system comes from
+    // PETSc's own product (the signs of the rows do not change its norm).
+    double decomposed_residual = 0.0;
+    if (!solved && numbering_) solved = true_residual(bv, xv, decomposed_residual);
     VecDestroy(&bv);
     VecDestroy(&xv);
     check_petsc(solved, "solving the PPE");
-    if (ranks_ > 1) gather_blocks(x);
+    if (ranks_ > 1 && !numbering_) gather_blocks(x);
 
     PetscInt its = 0;
     KSPGetIterationNumber(ksp_.h, &its);
     KSPConvergedReason why = KSP_CONVERGED_ITERATING;
     KSPGetConvergedReason(ksp_.h, &why);
     s.iterations = static_cast<int>(its);
-    s.residual = residual_of_blocks(*A, b, x) / scale;
+    s.residual = (numbering_ ? decomposed_residual : residual_of_blocks(*A, b, x)) / scale;
     s.converged = why > 0 && s.residual <= config_.tolerance * (1.0 + 1e-6);
     if (why < 0) s.reason = std::string("PETSc: ") + KSPConvergedReasons[why];
     // Running out of iterations or a Krylov breakdown may still leave a usable pressure (GMRES
@@ -177,33 +192,71 @@ class AmgSolver : public LinearSolver {
   }
 
  private:
-  // Rows [first_, first_ + m) of A on this rank: contiguous blocks of the particles' storage
-  // order, which is sorted by cell, so each rank's rows are a compact region. Values in place
-  // while the pattern is the one the Mat holds, else a new Mat. Rows whose diagonal is negative
-  // (the Laplacian rows; wall and Dirichlet rows have +1) enter negated: the solution and
-  // |b - A x| stay the same, and AMG's strength of connection and its smoother see one sign
-  // convention. With the mixed signs the 2D dam break stalled in the PPE.
-  void load_matrix(const SparseMatrix& A) {
+  // This rank's rows and the whole system's size. Replicated: rows [first_, first_ + m) of A,
+  // contiguous blocks of the particles' storage order, which is sorted by cell, so each rank's
+  // rows are a compact region. Decomposed (number_globally): rows [0, owned), columns numbered
+  // by the GlobalNumbering.
+  void set_layout(const SparseMatrix& A, const Eigen::VectorXd& b, const Eigen::VectorXd& x) {
     const int n = static_cast<int>(A.rows());
-    first_ = block_start(n, rank_);
-    const int m = block_start(n, rank_ + 1) - first_;
+    if (!numbering_) {
+      first_ = block_start(n, rank_);
+      rows_here_ = block_start(n, rank_ + 1) - first_;
+      total_ = n;
+      return;
+    }
+    const GlobalNumbering& g = *numbering_;
+    if (static_cast<std::size_t>(A.cols()) != g.global.size() || n < g.owned ||
+        b.size() < g.owned || x.size() < g.owned)
+      throw std::invalid_argument("decomposed pressure system: " + std::to_string(A.rows()) +
+                                  " x " + std::to_string(A.cols()) + " for " +
+                                  std::to_string(g.owned) + " owned rows and " +
+                                  std::to_string(g.global.size()) + " numbered columns");
+    first_ = 0;
+    rows_here_ = g.owned;
+    total_ = g.total;
+  }
+
+  // Values in place while the pattern is the one the Mat holds, else a new Mat. Rows whose
+  // diagonal is negative (the Laplacian rows; wall and Dirichlet rows have +1) enter negated: the
+  // solution and |b - A x| stay the same, and AMG's strength of connection and its smoother see
+  // one sign convention. With the mixed signs the 2D dam break stalled in the PPE.
+  void load_matrix(const SparseMatrix& A) {
+    const int m = rows_here_;
     const int* outer = A.outerIndexPtr() + first_;
     const int* inner = A.innerIndexPtr() + outer[0];
     const double* v = A.valuePtr() + outer[0];
     const int nnz = outer[m] - outer[0];
     row_sign_.resize(m);
-    signed_values_.resize(nnz);
     for (int i = 0; i < m; ++i) {
       double diagonal = 0.0;
       for (int k = outer[i] - outer[0]; k < outer[i + 1] - outer[0]; ++k)
         if (inner[k] == first_ + i) diagonal = v[k];
       row_sign_[i] = diagonal < 0.0 ? -1.0 : 1.0;
-      for (int k = outer[i] - outer[0]; k < outer[i + 1] - outer[0]; ++k)
-        signed_values_[k] = row_sign_[i] * v[k];
     }
-    bool same_pattern = mat_.h && n == size_ && static_cast<int>(rows_.size()) == m + 1 &&
-                        nnz == static_cast<int>(columns_.size()) &&
-                        std::equal(inner, inner + nnz, columns_.begin());
+    // The columns as the Mat numbers them: a decomposed system's local columns become global
+    // numbers, which no longer ascend along a row (halo columns); each row is sorted again, and
+    // `entry_` remembers where each entry's value sits in A.
+    std::vector<PetscInt> columns(inner, inner + nnz);
+    entry_.resize(nnz);
+    for (int k = 0; k < nnz; ++k) entry_[k] = k;
+    if (numbering_) {
+      const auto& global = numbering_->global;
+      for (int k = 0; k < nnz; ++k) columns[k] = static_cast<PetscInt>(global[inner[k]]);
+      for (int i = 0; i < m; ++i) {
+        const auto b = entry_.begin() + (outer[i] - outer[0]);
+        const auto e = entry_.begin() + (outer[i + 1] - outer[0]);
+        std::sort(b, e, [&](int p, int q) { return columns[p] < columns[q]; });
+      }
+      std::vector<PetscInt> sorted(nnz);
+      for (int k = 0; k < nnz; ++k) sorted[k] = columns[entry_[k]];
+      columns.swap(sorted);
+    }
+    signed_values_.resize(nnz);
+    for (int i = 0; i < m; ++i)
+      for (int k = outer[i] - outer[0]; k < outer[i + 1] - outer[0]; ++k)
+        signed_values_[k] = row_sign_[i] * v[entry_[k]];
+    bool same_pattern =
+        mat_.h && total_ == size_ && static_cast<int>(rows_.size()) == m + 1 && columns == columns_;
     for (int i = 0; same_pattern && i <= m; ++i) same_pattern = outer[i] - outer[0] == rows_[i];
     // Every rank must take the same branch: a new Mat is made collectively.
     if (ranks_ > 1) {
@@ -212,33 +265,33 @@ class AmgSolver : public LinearSolver {
       same_pattern = same == 1;
     }
     if (same_pattern) {
-      update_values(m, n);
+      update_values(m);
       return;
     }
     mat_.reset();
-    size_ = n;
+    size_ = total_;
     rows_.resize(m + 1);
     for (int i = 0; i <= m; ++i) rows_[i] = outer[i] - outer[0];
-    columns_.assign(inner, inner + nnz);
+    columns_.swap(columns);
     if (ranks_ > 1) {
       // Filled from the CSR arrays in one go (row lengths = neighbour counts).
-      check_petsc(MatCreateMPIAIJWithArrays(comm_, m, m, n, n, rows_.data(), columns_.data(),
-                                            signed_values_.data(), &mat_.h),
+      check_petsc(MatCreateMPIAIJWithArrays(comm_, m, m, total_, total_, rows_.data(),
+                                            columns_.data(), signed_values_.data(), &mat_.h),
                   "filling the distributed matrix");
       return;
     }
     check_petsc(MatCreate(comm_, &mat_.h), "creating the matrix");
-    check_petsc(MatSetSizes(mat_.h, n, n, n, n), "sizing the matrix");
+    check_petsc(MatSetSizes(mat_.h, m, m, m, m), "sizing the matrix");
     check_petsc(MatSetType(mat_.h, MATSEQAIJ), "choosing AIJ storage");
     check_petsc(
         MatSeqAIJSetPreallocationCSR(mat_.h, rows_.data(), columns_.data(), signed_values_.data()),
         "filling the matrix");
   }
 
-  void update_values(int m, int n) {
+  void update_values(int m) {
     if (ranks_ > 1) {
-      check_petsc(MatUpdateMPIAIJWithArrays(mat_.h, m, m, n, n, rows_.data(), columns_.data(),
-                                            signed_values_.data()),
+      check_petsc(MatUpdateMPIAIJWithArrays(mat_.h, m, m, total_, total_, rows_.data(),
+                                            columns_.data(), signed_values_.data()),
                   "updating the distributed matrix");
       return;
     }
@@ -252,21 +305,33 @@ class AmgSolver : public LinearSolver {
 
   bool distributed_rows() const override { return ranks_ > 1; }
 
-  // |b| and |b - A x| from every rank's own block: the rows of other blocks may not be
+  void number_globally(std::shared_ptr<const GlobalNumbering> numbering) override {
+    numbering_ = std::move(numbering);
+  }
+
+  // |b| and |b - A x| from every rank's own rows: the rows of other blocks may not be
   // assembled here.
   double norm_of_blocks(const Eigen::VectorXd& b) const {
-    if (ranks_ == 1) return b.norm();
-    const int n = static_cast<int>(b.size());
-    const int first = block_start(n, rank_);
-    return norm_from_squares(b.segment(first, block_start(n, rank_ + 1) - first).squaredNorm());
+    if (ranks_ == 1 && !numbering_) return b.norm();
+    return norm_from_squares(b.segment(first_, rows_here_).squaredNorm());
   }
   double residual_of_blocks(const SparseMatrix& A, const Eigen::VectorXd& b,
                             const Eigen::VectorXd& x) const {
     if (ranks_ == 1) return (b - A * x).norm();
-    const int n = static_cast<int>(b.size());
-    const int first = block_start(n, rank_), m = block_start(n, rank_ + 1) - first;
-    const Eigen::VectorXd r = b.segment(first, m) - A.middleRows(first, m) * x;
+    const Eigen::VectorXd r = b.segment(first_, rows_here_) - A.middleRows(first_, rows_here_) * x;
     return norm_from_squares(r.squaredNorm());
+  }
+  // |b - A x| by PETSc, over all ranks.
+  PetscErrorCode true_residual(Vec b, Vec x, double& norm) const {
+    Vec r = nullptr;
+    PetscErrorCode e = VecDuplicate(b, &r);
+    if (!e) e = MatMult(mat_.h, x, r);
+    if (!e) e = VecAXPY(r, -1.0, b);
+    PetscReal value = 0.0;
+    if (!e) e = VecNorm(r, NORM_2, &value);
+    VecDestroy(&r);
+    norm = value;
+    return e;
   }
   // sqrt of the sum over the ranks of their squared norms.
   double norm_from_squares(double squares) const {
@@ -292,9 +357,13 @@ class AmgSolver : public LinearSolver {
   Owned<Mat, MatDestroy> mat_;
   MPI_Comm comm_ = PETSC_COMM_SELF;  // PETSC_COMM_WORLD when the run has several ranks
   int ranks_ = 1, rank_ = 0;
-  int size_ = -1;                         // rows of the whole system the Mat holds (-1: none yet)
-  int first_ = 0;                         // this rank's first row
+  std::shared_ptr<const GlobalNumbering> numbering_;  // set: decomposed systems
+  PetscInt size_ = -1;                    // rows of the whole system the Mat holds (-1: none yet)
+  PetscInt total_ = 0;                    // rows of the whole system being solved
+  int first_ = 0;                         // this rank's first row of A (local index)
+  int rows_here_ = 0;                     // this rank's rows
   std::vector<PetscInt> rows_, columns_;  // this rank's rows of the Mat (local row pointers)
+  std::vector<int> entry_;                // per Mat entry of this rank: its position in A's row
   Eigen::VectorXd row_sign_, signed_b_;
   std::vector<double> signed_values_;
   int solves_since_setup_ = 0;

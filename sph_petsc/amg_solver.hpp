@@ -5,7 +5,9 @@
 // Eigen path. On several MPI ranks (PETSC_COMM_WORLD larger than one) the system is one
 // distributed MPIAIJ matrix: every rank passes the whole (replicated) system, enters its own
 // contiguous block of rows, and gets the whole solution back; all ranks must call solve() together
-// with the same system. Reuse between solves:
+// with the same system. A decomposed system (number_globally, sph/linear_solver.hpp) is entered
+// the same way, each rank its owned rows with the columns renumbered globally; each rank gets its
+// owned rows of x back. Reuse between solves:
 //  - the Mat keeps its storage while the sparsity pattern stays the same (only the values are
 //    copied), else it is made anew;
 //  - x comes in as the initial guess (the previous pressure);
