@@ -38,11 +38,35 @@ IsphSolver<Dim>::IsphSolver(const IsphConfig<Dim>& config, const Domain<Dim>& do
 }
 
 template <int Dim>
+void IsphSolver<Dim>::decompose(std::shared_ptr<Decomposition<Dim>> d) {
+  if (particles_.count(kSolid) > 0)
+    throw SimulationError(
+        "the fluid cannot yet be decomposed over MPI ranks with PMS solids ([resolved] bodies): "
+        "run this case without parallel.decompose");
+  try {
+    linear_solver_->number_globally(nullptr);
+    unit_solver_->number_globally(nullptr);
+  } catch (const std::invalid_argument& e) {
+    throw SimulationError(std::string("decomposed fluid: ") + e.what());
+  }
+  // Every process holds every particle: each keeps every parts-th, then all go to their owners.
+  std::vector<int> mine;
+  for (int i = d->part(); i < static_cast<int>(particles_.size()); i += d->parts())
+    mine.push_back(i);
+  particles_.permute(mine);
+  particles_.for_each_array([&](auto& a) { a.resize(mine.size()); });
+  d->migrate(particles_, nullptr);
+  decomposition_ = d;
+  share_ = std::move(d);
+  unit_response_.resize(0);
+}
+
+template <int Dim>
 double IsphSolver<Dim>::max_speed() const {
   double m = 0.0;
   for (std::size_t i = 0; i < particles_.size(); ++i)
     if (particles_.kind[i] != kWall) m = std::max(m, particles_.v[i].norm());
-  return m;
+  return decomposition_ ? share_->max(m) : m;
 }
 
 template <int Dim>
@@ -71,11 +95,17 @@ void IsphSolver<Dim>::update_forcing_kinds() {
 template <int Dim>
 StepStats IsphSolver<Dim>::step(double dt) {
   if (!(dt > 0.0) || !std::isfinite(dt)) throw SimulationError("time step must be positive");
-  const int n = static_cast<int>(particles_.size());
-  blocked_ =
-      share_->parts() > 1 && linear_solver_->distributed_rows() && unit_solver_->distributed_rows();
-  first_ = blocked_ ? share_->first(n) : 0;
-  last_ = blocked_ ? share_->last(n) : n;
+  blocked_ = decomposition_ || (share_->parts() > 1 && linear_solver_->distributed_rows() &&
+                                unit_solver_->distributed_rows());
+  if (decomposition_) {
+    // q travels with the particles, as it follows them through the sort, so that it is reused
+    // as on one process.
+    std::vector<double> q;
+    const bool carry = unit_response_.size() > 0;
+    if (carry) q.assign(unit_response_.data(), unit_response_.data() + unit_response_.size());
+    decomposition_->migrate(particles_, carry ? &q : nullptr);
+    if (carry) unit_response_ = Eigen::Map<const Eigen::VectorXd>(q.data(), q.size());
+  }
   update_forcing_kinds();
   find_neighbors();  // the pair geometry and weights every stage below reuses
   {
@@ -110,6 +140,11 @@ StepStats IsphSolver<Dim>::step(double dt) {
       exchange(particles_.v);  // the blended rows (the count is over all processes)
     shift(dt);
     advect(dt, stats);
+  }
+  if (decomposition_) {
+    decomposition_->drop_halo(particles_);
+    if (unit_response_.size() > 0)
+      unit_response_.conservativeResize(static_cast<Eigen::Index>(particles_.size()));
   }
   time_ += dt;
   ++steps_;
@@ -147,7 +182,8 @@ std::string IsphSolver<Dim>::describe_fastest() const {
   const std::string fastest = std::string("the fastest is ") + names[P.kind[fast]] + " particle " +
                               std::to_string(P.id[fast]) + " at " + format_vector(P.x[fast]) +
                               " m (" + format_number(P.v[fast].norm(), 4) + " m/s)";
-  if (fast < first_ || fast >= last_) return fastest;  // its neighbours were listed elsewhere
+  // Its neighbours were listed elsewhere, or (decomposed) partly in the halo dropped since.
+  if (fast < first_ || fast >= last_ || decomposition_) return fastest;
   // The neighbour list is the step's own (built before the particles moved): what the fastest
   // particle's equations saw. A fluid particle whose support is mostly solid sits in a pocket
   // between bodies (the semi-resolved erosion runs broke up from one).
@@ -161,18 +197,36 @@ std::string IsphSolver<Dim>::describe_fastest() const {
 template <int Dim>
 void IsphSolver<Dim>::check_state(const char* where) const {
   const auto& P = particles_;
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    if (!P.x[i].allFinite() || !P.v[i].allFinite() || !std::isfinite(P.p[i]))
-      throw SimulationError("non-finite value (NaN/inf) in particle " + std::to_string(P.id[i]) +
-                                " " + where + " at t = " + format_number(time_, 4) +
-                                " s: the run became unstable; reduce time.dt (or use \"auto\")",
-                            "nan");
-    if (P.kind[i] != kWall && !domain_.contains(P.x[i]))
-      throw SimulationError("fluid particle " + std::to_string(P.id[i]) + " left the domain at " +
-                                format_vector(P.x[i]) + ", t = " + format_number(time_, 4) +
-                                " s: close the container with walls or enlarge domain.min/max",
-                            "fluid_left_domain");
+  std::string failure, cause;
+  for (std::size_t i = 0; i < P.size() && failure.empty(); ++i) {
+    if (!P.x[i].allFinite() || !P.v[i].allFinite() || !std::isfinite(P.p[i])) {
+      failure = "non-finite value (NaN/inf) in particle " + std::to_string(P.id[i]) + " " + where +
+                " at t = " + format_number(time_, 4) +
+                " s: the run became unstable; reduce time.dt (or use \"auto\")";
+      cause = "nan";
+    } else if (P.kind[i] != kWall && !domain_.contains(P.x[i])) {
+      failure = "fluid particle " + std::to_string(P.id[i]) + " left the domain at " +
+                format_vector(P.x[i]) + ", t = " + format_number(time_, 4) +
+                " s: close the container with walls or enlarge domain.min/max";
+      cause = "fluid_left_domain";
+    }
   }
+  // Decomposed, the particle is on one process only: every process stops with its message (the
+  // lowest such process's), so that none waits for the others in the next step.
+  if (decomposition_) {
+    std::vector<char> mine;
+    if (!failure.empty()) {
+      const std::string record = cause + '\n' + failure;
+      mine.assign(record.begin(), record.end());
+      mine.push_back('\0');
+    }
+    const std::vector<char> all = share_->concatenate(mine);
+    if (all.empty()) return;
+    const std::string first(all.data());
+    cause = first.substr(0, first.find('\n'));
+    failure = first.substr(first.find('\n') + 1);
+  }
+  if (!failure.empty()) throw SimulationError(failure, cause);
 }
 
 template class IsphSolver<2>;

@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "decomposition.hpp"
 #include "domain.hpp"
 #include "free_surface.hpp"
 #include "kernel.hpp"
@@ -155,6 +156,12 @@ class IsphSolver {
   // effect in the steps where the pressure solver is distributed over the same processes; with
   // another solver every process computes every row, as before.
   void share_rows(std::shared_ptr<const RowShare> share) { share_ = std::move(share); }
+  // Decomposes the fluid over the processes of `d` (sph/decomposition.hpp): from now on this
+  // process steps only the particles it owns, and particles() holds them alone between steps.
+  // Every process must have been given every particle; collective. Needs the distributed
+  // pressure solver (solver.preconditioner = "amg") and a case without PMS solids.
+  void decompose(std::shared_ptr<Decomposition<Dim>> d);
+  bool decomposed() const { return decomposition_ != nullptr; }
   // grad p of the last step at the given rows (storage order), on every process: with shared
   // rows only the process that computed a row holds its neighbour list (neighbors()).
   std::vector<Vec<Dim>> pressure_gradient_at(const std::vector<int>& rows) const;
@@ -200,6 +207,8 @@ class IsphSolver {
     share_->exchange(rows);
   }
   const RowShare* block_share() const { return blocked_ ? share_.get() : nullptr; }
+  // Passes over all rows that must reduce over the processes instead (decomposed fluid).
+  const RowShare* decomposed_share() const { return decomposition_ ? share_.get() : nullptr; }
 
   IsphConfig<Dim> config_;
   Domain<Dim> domain_;
@@ -209,7 +218,8 @@ class IsphSolver {
   std::unique_ptr<LinearSolver> linear_solver_;
   std::unique_ptr<LinearSolver> unit_solver_;  // for spread_pinned_source's q (its own setup)
   std::shared_ptr<const RowShare> share_ = std::make_shared<RowShare>();
-  bool blocked_ = false;      // this step's rows are shared (share_rows)
+  std::shared_ptr<Decomposition<Dim>> decomposition_;  // set: the same object as share_
+  bool blocked_ = false;                               // this step's rows are shared (share_rows)
   int first_ = 0, last_ = 0;  // the rows this process computes in this step
   double n0_ = 0.0;
   double time_ = 0.0;

@@ -23,6 +23,8 @@ void PorousMedium<Dim>::prepare(const Particles<Dim>& P, const Neighbors<Dim>& n
           "unresolved.min_porosity and the drag law)");
     if (eps != 1.0 || K != 0.0) active_ = true;
   }
+  // Decomposed, another process's particles may be porous: all take the same branch below.
+  if (share && share->decomposed()) active_ = share->max(active_ ? 1.0 : 0.0) > 0.0;
   coefficient_.assign(n, 1.0);
   if (!active_) return;
 #pragma omp parallel for schedule(static)

@@ -7,18 +7,26 @@
 namespace isph {
 
 template <int Dim>
-void remove_net_source(const Particles<Dim>& particles, std::vector<double>& rhs) {
-  double sum = 0.0;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < particles.size(); ++i) {
+void remove_net_source(const Particles<Dim>& particles, std::vector<double>& rhs,
+                       const RowShare* decomposed) {
+  const int all = static_cast<int>(particles.size());
+  const int first = decomposed ? decomposed->first(all) : 0;
+  const int last = decomposed ? decomposed->last(all) : all;
+  double sum = 0.0, n = 0.0, surface = 0.0;
+  for (int i = first; i < last && surface == 0.0; ++i) {
     if (particles.kind[i] == kWall) continue;
-    if (particles.surface[i]) return;  // a Dirichlet row sets the level: nothing to remove
+    surface = particles.surface[i];
     sum += rhs[i];
-    ++n;
+    n += 1.0;
   }
-  if (n == 0) return;
-  const double mean = sum / static_cast<double>(n);
-  for (std::size_t i = 0; i < particles.size(); ++i)
+  if (decomposed) {
+    surface = decomposed->max(surface);
+    sum = decomposed->sum(sum);
+    n = decomposed->sum(n);
+  }
+  if (surface > 0.0 || n == 0.0) return;  // a Dirichlet row sets the level: nothing to remove
+  const double mean = sum / n;
+  for (int i = first; i < last; ++i)
     if (particles.kind[i] != kWall) rhs[i] -= mean;
 }
 
@@ -27,26 +35,39 @@ void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb
                        const Operators<Dim>& op, const std::vector<double>& rhs,
                        const Vec<Dim>& gravity, double rho0, double h, PressureSystem<Dim>& out,
                        const std::vector<double>* coefficient,
-                       const std::vector<double>* surface_depth) {
+                       const std::vector<double>* surface_depth, const RowShare* decomposed) {
   const int n = static_cast<int>(particles.size());
   // Interior rows are scaled by h^2 so that all rows have O(1) coefficients.
   const double scale = h * h;
+  const int first = decomposed ? decomposed->first(n) : 0;
+  const int last = decomposed ? decomposed->last(n) : n;
 
   bool has_dirichlet = false;
-  for (int i = 0; i < n; ++i)
+  for (int i = first; i < last; ++i)
     if (particles.kind[i] != kWall && particles.surface[i]) has_dirichlet = true;
+  if (decomposed) has_dirichlet = decomposed->max(has_dirichlet ? 1.0 : 0.0) > 0.0;
   // The pinned particle is the one with the smallest id, not the first in storage order: the
   // storage is re-sorted by cell every step, and spread_pinned_source can reuse its second
   // solution only while the same particle is pinned (in the closed tank of
   // examples/fluidization_2d the first-in-order choice changed often enough to make that
   // solve the largest part of the pressure cost).
   out.pinned = -1;
+  out.pinned_id = -1;
   out.pin_row.clear();
-  if (!has_dirichlet)
-    for (int i = 0; i < n; ++i)
+  if (!has_dirichlet) {
+    for (int i = first; i < last; ++i)
       if (particles.kind[i] != kWall && op.order[i] > 0 &&
           (out.pinned < 0 || particles.id[i] < particles.id[out.pinned]))
         out.pinned = i;
+    out.pinned_id = out.pinned >= 0 ? particles.id[out.pinned] : -1;
+    if (decomposed) {
+      // Ids are far below 2^53: exact as doubles. The smallest as minus the largest negative.
+      const double none = -9.0e15;
+      const double best = -decomposed->max(out.pinned >= 0 ? -double(out.pinned_id) : none);
+      out.pinned_id = best == -none ? -1 : static_cast<int64_t>(best);
+      if (out.pinned >= 0 && particles.id[out.pinned] != out.pinned_id) out.pinned = -1;
+    }
+  }
 
   // Build CSR directly: one diagonal plus one entry per neighbour in every row.
   SparseMatrix& A = out.A;
@@ -191,15 +212,15 @@ template Eigen::VectorXd uniform_source<2>(const Particles<2>&, const Operators<
                                            const PressureSystem<2>&);
 template Eigen::VectorXd uniform_source<3>(const Particles<3>&, const Operators<3>&,
                                            const PressureSystem<3>&);
-template void remove_net_source<2>(const Particles<2>&, std::vector<double>&);
-template void remove_net_source<3>(const Particles<3>&, std::vector<double>&);
+template void remove_net_source<2>(const Particles<2>&, std::vector<double>&, const RowShare*);
+template void remove_net_source<3>(const Particles<3>&, std::vector<double>&, const RowShare*);
 template void assemble_pressure<2>(const Particles<2>&, const Neighbors<2>&, const Operators<2>&,
                                    const std::vector<double>&, const Vec<2>&, double, double,
                                    PressureSystem<2>&, const std::vector<double>*,
-                                   const std::vector<double>*);
+                                   const std::vector<double>*, const RowShare*);
 template void assemble_pressure<3>(const Particles<3>&, const Neighbors<3>&, const Operators<3>&,
                                    const std::vector<double>&, const Vec<3>&, double, double,
                                    PressureSystem<3>&, const std::vector<double>*,
-                                   const std::vector<double>*);
+                                   const std::vector<double>*, const RowShare*);
 
 }  // namespace isph

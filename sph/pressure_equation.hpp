@@ -12,12 +12,14 @@
 //    div(c grad p) = rhs, each Laplacian pair weight scaled by the harmonic mean of c_i and c_j;
 //  - with no Dirichlet row at all (closed or periodic box), one fluid row is pinned to p = 0 to
 //    remove the constant null space.
+#include <cstdint>
 #include <utility>
 #include <vector>
 
 #include "linear_solver.hpp"
 #include "neighbors.hpp"
 #include "operators.hpp"
+#include "row_share.hpp"
 
 namespace isph {
 
@@ -26,6 +28,9 @@ struct PressureSystem {
   SparseMatrix A;
   Eigen::VectorXd b;
   int pinned = -1;  // index of the pinned row, -1 when a Dirichlet row fixes the level
+  // The pinned particle's id, -1 without a pin; decomposed, the same on every process while only
+  // the owner's `pinned` names a row.
+  int64_t pinned_id = -1;
   // The interior equation the pin replaced (scaled like the other rows): its coefficients by
   // column, diagonal included, and its right-hand side. spread_pinned_source() uses them.
   std::vector<std::pair<int, double>> pin_row;
@@ -62,14 +67,20 @@ Eigen::VectorXd uniform_source(const Particles<Dim>& particles, const Operators<
 // column grew a vortex around the pinned particle within 0.3 s, and the circulation tank closed
 // at the water line blew up from its pinned corner at 0.41 s (stable to 2 s with this). Removes
 // the mean over fluid-like rows; does nothing when any particle is on the free surface.
+// `decomposed`: the fluid decomposed over processes (sph/decomposition.hpp); the mean is then
+// over every process's owned rows.
 template <int Dim>
-void remove_net_source(const Particles<Dim>& particles, std::vector<double>& rhs);
+void remove_net_source(const Particles<Dim>& particles, std::vector<double>& rhs,
+                       const RowShare* decomposed = nullptr);
 
+// `decomposed`: as above; whether any Dirichlet row exists and which particle is pinned (the
+// smallest id of all processes' owned candidates) are then decided over all processes.
 template <int Dim>
 void assemble_pressure(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
                        const Operators<Dim>& op, const std::vector<double>& rhs,
                        const Vec<Dim>& gravity, double rho0, double h, PressureSystem<Dim>& out,
                        const std::vector<double>* coefficient = nullptr,
-                       const std::vector<double>* surface_depth = nullptr);
+                       const std::vector<double>* surface_depth = nullptr,
+                       const RowShare* decomposed = nullptr);
 
 }  // namespace isph

@@ -22,10 +22,15 @@ class RowShare {
   virtual ~RowShare() = default;
   virtual int parts() const { return 1; }
   virtual int part() const { return 0; }
-  int first(int n) const { return block_start(n, part(), parts()); }
-  int last(int n) const { return block_start(n, part() + 1, parts()); }
+  // The rows of n this process computes.
+  virtual int first(int n) const { return block_start(n, part(), parts()); }
+  virtual int last(int n) const { return block_start(n, part() + 1, parts()); }
+  // Each process holds only the particles it owns and a halo (sph/decomposition.hpp), not every
+  // row: a pass over all rows must then reduce over the processes instead.
+  virtual bool decomposed() const { return false; }
 
-  // Every process's block of `data` (n rows of row_bytes bytes) to every process.
+  // Every process's block of `data` (n rows of row_bytes bytes) to every process; decomposed:
+  // the owners' rows into the halo's copies.
   virtual void exchange_rows(void* /*data*/, std::size_t /*row_bytes*/, int /*n*/) const {}
   // All processes' lists (of bytes), in the order of the parts.
   virtual std::vector<char> concatenate_bytes(const std::vector<char>& mine) const { return mine; }

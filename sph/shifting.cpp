@@ -82,6 +82,19 @@ void separate_close_pairs(Particles<Dim>& particles, const Neighbors<Dim>& nb,
     }
     return;
   }
+  if (share->decomposed()) {
+    // Each process sweeps its own particles' pairs. A pair with a halo particle is swept by both
+    // owners, and each keeps only its own particle's half (the halo's is dropped after the step).
+    const int owned = share->last(n);
+    for (int i = 0; i < owned; ++i) {
+      if (P.kind[i] != kFluid) continue;
+      for (int k = nb.begin(i); k < nb.end(i); ++k) {
+        const int j = nb.index[k];
+        if ((j > i || j >= owned) && P.kind[j] == kFluid) separate(i, j);
+      }
+    }
+    return;
+  }
   std::vector<int> mine;  // pairs (i, j) in the serial sweep's order
   for (int i = share->first(n); i < share->last(n); ++i) {
     if (P.kind[i] != kFluid) continue;

@@ -60,8 +60,10 @@ void IsphSolver<Dim>::advect(double dt, StepStats& stats) {
     surface += P.surface[i];
     volume += P.volume * (full_support_[i] ? n0_ / number_density_[i] : 1.0);
   }
-  exchange(P.x);
-  exchange(P.v);
+  if (!decomposition_) {  // the decomposed step drops its halo next
+    exchange(P.x);
+    exchange(P.v);
+  }
   if (blocked_) {
     vmax = share_->max(vmax);
     surface = share_->sum(surface);

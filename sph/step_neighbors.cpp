@@ -14,6 +14,19 @@ void IsphSolver<Dim>::find_neighbors() {
     for (std::size_t k = 0; k < perm.size(); ++k) q[k] = unit_response_[perm[k]];
     unit_response_.swap(q);
   }
+  if (decomposition_) {
+    decomposition_->add_halo(particles_, search_.cutoff());
+    linear_solver_->number_globally(decomposition_->numbering());
+    unit_solver_->number_globally(decomposition_->numbering());
+  }
+  const int n = static_cast<int>(particles_.size());
+  first_ = blocked_ ? share_->first(n) : 0;
+  last_ = blocked_ ? share_->last(n) : n;
+  if (decomposition_ && unit_response_.size() > 0) {
+    // pinned_lambda reads q at the pin's neighbours, some of which may be in the halo.
+    unit_response_.conservativeResize(n);
+    share_->exchange_rows(unit_response_.data(), sizeof(double), n);
+  }
   search_.build(particles_, kernel_, nb_, first_, last_);
 }
 

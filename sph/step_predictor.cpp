@@ -81,6 +81,7 @@ void IsphSolver<Dim>::compute_eddy_viscosity() {
     }
     exchange(eddy_viscosity_);
     max_eddy_viscosity_ = *std::max_element(eddy_viscosity_.begin(), eddy_viscosity_.end());
+    if (decomposition_) max_eddy_viscosity_ = share_->max(max_eddy_viscosity_);
   }
 }
 

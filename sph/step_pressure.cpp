@@ -37,15 +37,15 @@ void IsphSolver<Dim>::compute_pressure_rhs(double dt) {
     rhs_[i] = rho0 / dt * divergence(nb_, op_, u_star_, i) +
               config_.alpha_s * rho0 * density_error / (dt * dt);
   }
-  exchange(rhs_);  // the net source is a sum over every row
-  remove_net_source(P, rhs_);
+  if (!decomposition_) exchange(rhs_);  // the net source is a sum over every row
+  remove_net_source(P, rhs_, decomposed_share());
 }
 
 template <int Dim>
 void IsphSolver<Dim>::assemble_pressure_system() {
   assemble_pressure(particles_, nb_, op_, rhs_, config_.gravity, config_.density, kernel_.h(),
                     system_, porous_.active() ? &porous_.pressure_coefficient() : nullptr,
-                    surface_depth_.empty() ? nullptr : &surface_depth_);
+                    surface_depth_.empty() ? nullptr : &surface_depth_, decomposed_share());
 }
 
 template <int Dim>
@@ -57,20 +57,23 @@ void IsphSolver<Dim>::solve_pressure(StepStats& stats) {
   // Warm start from the pinned system's own last solution, not the spread one: the two differ by
   // lambda q, a smooth field over the whole domain that BiCGSTAB would otherwise have to remove
   // again every step (fluidization tank: 83 -> 140 iterations per step).
-  const bool same_pin = system_.pinned >= 0 && unit_response_.size() == n &&
-                        P.id[system_.pinned] == unit_response_pin_;
+  const bool same_pin = system_.pinned_id >= 0 && unit_response_.size() == n &&
+                        system_.pinned_id == unit_response_pin_;
   if (config_.spread_pin && same_pin) pressure_ += unit_response_lambda_ * unit_response_;
   // Physical pressure scale (hydrostatic head over the box plus dynamic pressure) per row.
   const double extent = domain_.length().maxCoeff();
   const double vmax = max_speed();
-  const double p_scale =
-      rho0 * (config_.gravity.norm() * extent + vmax * vmax) * std::sqrt(double(n));
+  const double rows = decomposition_ ? double(decomposition_->numbering()->total) : double(n);
+  const double p_scale = rho0 * (config_.gravity.norm() * extent + vmax * vmax) * std::sqrt(rows);
   const SolveStats s = linear_solver_->solve(system_.A, system_.b, pressure_, p_scale);
+  // Decomposed, the solver returned the owned rows only; the pin's lambda and the corrector read
+  // the halo's too.
+  if (decomposition_) share_->exchange_rows(pressure_.data(), sizeof(double), n);
   stats.ppe_iterations = s.iterations;
   stats.ppe_residual = s.residual;
   timings_.solve_setup += s.setup_seconds;
   unit_response_lambda_ = 0.0;
-  if (config_.spread_pin && system_.pinned >= 0 && std::isfinite(s.residual)) {
+  if (config_.spread_pin && system_.pinned_id >= 0 && std::isfinite(s.residual)) {
     // q follows the particle arrangement slowly: solved again every few steps, in between the
     // last one is used (the pinned row still holds exactly; the others take lambda times the
     // change of A q since then, a small part of an excess that is itself small).
@@ -83,8 +86,10 @@ void IsphSolver<Dim>::solve_pressure(StepStats& stats) {
       stats.ppe_iterations += u.iterations;
       timings_.solve_setup += u.setup_seconds;
       fresh = std::isfinite(u.residual) && u.residual <= 1e3 * config_.pressure_solver.tolerance;
-      unit_response_pin_ = P.id[system_.pinned];
+      unit_response_pin_ = system_.pinned_id;
       if (!fresh) unit_response_.resize(0);
+      // pinned_lambda reads q at the pin's neighbours, some of which may be in the halo.
+      if (fresh && decomposition_) share_->exchange_rows(unit_response_.data(), sizeof(double), n);
     }
     if (fresh) {
       // Only the process whose rows hold the pin assembled its interior equation.

@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "mpi_collectives.hpp"
+
 namespace isph {
 
 BlockRowShare::BlockRowShare(MPI_Comm comm) : comm_(comm) {
@@ -27,28 +29,15 @@ void BlockRowShare::exchange_rows(void* data, std::size_t row_bytes, int n) cons
 }
 
 std::vector<char> BlockRowShare::concatenate_bytes(const std::vector<char>& mine) const {
-  const int count = static_cast<int>(mine.size());
-  std::vector<int> counts(parts_), starts(parts_, 0);
-  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_);
-  for (int r = 1; r < parts_; ++r) starts[r] = starts[r - 1] + counts[r - 1];
-  std::vector<char> all(static_cast<std::size_t>(starts.back()) + counts.back());
-  MPI_Allgatherv(mine.data(), count, MPI_BYTE, all.data(), counts.data(), starts.data(), MPI_BYTE,
-                 comm_);
-  return all;
+  return collectives::concatenate(comm_, mine);
 }
 
-double BlockRowShare::sum(double x) const {
-  MPI_Allreduce(MPI_IN_PLACE, &x, 1, MPI_DOUBLE, MPI_SUM, comm_);
-  return x;
-}
+double BlockRowShare::sum(double x) const { return collectives::sum(comm_, x); }
 
 void BlockRowShare::sum_in_place(double* data, std::size_t count) const {
-  MPI_Allreduce(MPI_IN_PLACE, data, static_cast<int>(count), MPI_DOUBLE, MPI_SUM, comm_);
+  collectives::sum_in_place(comm_, data, count);
 }
 
-double BlockRowShare::max(double x) const {
-  MPI_Allreduce(MPI_IN_PLACE, &x, 1, MPI_DOUBLE, MPI_MAX, comm_);
-  return x;
-}
+double BlockRowShare::max(double x) const { return collectives::max(comm_, x); }
 
 }  // namespace isph

@@ -1,6 +1,7 @@
 #include "particle_exchange.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <numeric>
 
 namespace isph {
@@ -53,6 +54,17 @@ HaloPlan add_halo(MPI_Comm comm, const RcbTree<Dim>& tree, double width, Particl
                          records::record_bytes(p), plan.recv_counts);
   records::unpack(recv, p, plan.owned);
   return plan;
+}
+
+void refresh_halo_rows(MPI_Comm comm, const HaloPlan& plan, void* rows, std::size_t row_bytes) {
+  char* data = static_cast<char*>(rows);
+  std::vector<char> send(plan.send_index.size() * row_bytes);
+  for (std::size_t k = 0; k < plan.send_index.size(); ++k)
+    std::memcpy(send.data() + k * row_bytes, data + plan.send_index[k] * row_bytes, row_bytes);
+  std::vector<int> counts;
+  const std::vector<char> recv =
+      records::alltoallv(comm, send, plan.send_counts, row_bytes, counts);
+  std::memcpy(data + static_cast<std::size_t>(plan.owned) * row_bytes, recv.data(), recv.size());
 }
 
 template void migrate<2>(MPI_Comm, const RcbTree<2>&, Particles<2>&);

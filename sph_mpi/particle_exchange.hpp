@@ -24,26 +24,25 @@ struct HaloPlan {
   std::vector<int> send_index;   // owned particles sent, grouped by destination rank
   std::vector<int> send_counts;  // per rank
   std::vector<int> recv_counts;  // per rank, in the order the halo holds them
+  int halo() const {
+    int h = 0;
+    for (int c : recv_counts) h += c;
+    return h;
+  }
 };
 
 // Appends the halo: every particle of another rank closer than `width` to this rank's box.
 template <int Dim>
 HaloPlan add_halo(MPI_Comm comm, const RcbTree<Dim>& tree, double width, Particles<Dim>& p);
 
-// The owners' current values of one per-particle array into the halo's copies.
+// The owners' current values of one per-particle array into the halo's copies: `rows` holds
+// owned + halo rows of row_bytes bytes each.
+void refresh_halo_rows(MPI_Comm comm, const HaloPlan& plan, void* rows, std::size_t row_bytes);
+
 template <class T>
 void refresh_halo(MPI_Comm comm, const HaloPlan& plan, std::vector<T>& values) {
-  std::vector<char> send(plan.send_index.size() * sizeof(T));
-  for (std::size_t k = 0; k < plan.send_index.size(); ++k)
-    std::memcpy(send.data() + k * sizeof(T), &values[plan.send_index[k]], sizeof(T));
-  std::vector<int> counts;
-  const std::vector<char> recv =
-      records::alltoallv(comm, send, plan.send_counts, sizeof(T), counts);
-  const std::size_t n = recv.size() / sizeof(T);
-  values.resize(plan.owned + n);
-  for (std::size_t k = 0; k < n; ++k)
-    std::memcpy(static_cast<void*>(&values[plan.owned + k]), recv.data() + k * sizeof(T),
-                sizeof(T));
+  values.resize(plan.owned + plan.halo());
+  refresh_halo_rows(comm, plan, values.data(), sizeof(T));
 }
 
 // Back to the owned particles alone.
