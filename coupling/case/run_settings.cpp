@@ -3,8 +3,9 @@
 namespace isphdem {
 
 std::vector<std::string> run_settings_keys() {
-  return {"time.end",     "time.dt",    "time.max_dt",     "time.cfl",
-          "time.viscous", "time.force", "output.interval", "output.diagnostics_every"};
+  return {"time.end",          "time.dt",    "time.max_dt",     "time.cfl",
+          "time.viscous",      "time.force", "output.interval", "output.diagnostics_every",
+          "parallel.decompose"};
 }
 
 RunSettings parse_run_settings(const CaseFile& c) {
@@ -30,6 +31,7 @@ RunSettings parse_run_settings(const CaseFile& c) {
   s.output_interval = c.positive("output.interval", s.t_end / 10.0);
   s.diagnostics_every = c.integer("output.diagnostics_every", s.diagnostics_every);
   if (s.diagnostics_every < 1) throw CaseError("'output.diagnostics_every' must be at least 1");
+  if (c.has("parallel.decompose")) s.decompose = c.boolean("parallel.decompose", true);
   return s;
 }
 

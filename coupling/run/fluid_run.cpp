@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "block_row_share.hpp"
+#include "rcb_decomposition.hpp"
 
 namespace isphdem {
 
@@ -41,6 +42,38 @@ FluidRun<Dim>::FluidRun(FluidScene<Dim> scene, const RunSettings& settings)
   MPI_Initialized(&mpi);
   if (mpi) MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   if (ranks > 1) solver_.share_rows(std::make_shared<isph::BlockRowShare>(MPI_COMM_WORLD));
+}
+
+template <int Dim>
+bool FluidRun<Dim>::decompose() {
+  int mpi = 0, ranks = 1;
+  MPI_Initialized(&mpi);
+  if (mpi) MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  const bool distributed = solver_.config().pressure_solver.preconditioner == "amg";
+  if (ranks == 1 || !settings_.decompose.value_or(distributed)) return false;
+  if (!distributed)
+    throw CaseError(
+        "parallel.decompose = true needs the pressure solved over the ranks: set "
+        "solver.preconditioner = \"amg\" (or parallel.decompose = false)");
+  try {
+    solver_.decompose(
+        std::make_shared<isph::RcbDecomposition<Dim>>(MPI_COMM_WORLD, solver_.domain()));
+  } catch (const isph::SimulationError& e) {
+    throw CaseError(e.what());
+  }
+  return true;
+}
+
+template <int Dim>
+double FluidRun<Dim>::kinetic_energy() const {
+  const auto& P = solver_.particles();
+  double ke = 0.0;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.kind[i] != isph::kWall)
+      ke += 0.5 * solver_.config().density * P.volume * P.v[i].squaredNorm();
+  if (solver_.decomposed())
+    MPI_Allreduce(MPI_IN_PLACE, &ke, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  return ke;
 }
 
 template <int Dim>

@@ -20,6 +20,14 @@ class FluidRun {
   // dt until t is reached or passed by less than one step.
   void run_until(double t, const std::function<void(const isph::StepStats&)>& after_step = {});
 
+  // Under mpirun, where settings.decompose asks for it (unset: where the pressure solve is
+  // distributed, solver.preconditioner = "amg"): from now on each rank holds and steps only its
+  // part of the fluid (docs/parallel.md). Call before the first step, with the same fluid on
+  // every rank (check_replicas); collective. Returns whether the fluid is decomposed.
+  bool decompose();
+  // Sum of rho V |v|^2 / 2 over the fluid, over all ranks when decomposed (collective then).
+  double kinetic_energy() const;
+
   isph::IsphSolver<Dim>& solver() { return solver_; }
   const isph::IsphSolver<Dim>& solver() const { return solver_; }
   const RunSettings& settings() const { return settings_; }

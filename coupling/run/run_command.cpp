@@ -96,10 +96,11 @@ bool run_to_end(Run& run, const RunSettings& settings, double end_tolerance,
   return true;
 }
 
-// A fluid-only case. On several ranks (mpirun) every rank holds all particles and steps them
-// alike; the pressure equation is one system over the ranks (solver.preconditioner = "amg"), and
-// the ranks write each snapshot together (each its block of rows); rank 0 talks and writes
-// diagnostics.csv.
+// A fluid-only case. On several ranks (mpirun) with solver.preconditioner = "amg" each rank holds
+// and steps its own part of the fluid (FluidRun::decompose), the pressure equation one system
+// over the ranks; with parallel.decompose = false every rank holds all particles and computes its
+// block of rows. The ranks write each snapshot together (each its own rows); rank 0 talks and
+// writes diagnostics.csv.
 template <int Dim>
 int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
   int rank = 0;
@@ -139,8 +140,12 @@ int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
     f << "# " << c.path().string() << " with the overrides of this run\n" << c.table() << "\n";
     diagnostics = std::make_unique<DiagnosticsWriter>(args.out / "diagnostics.csv", columns);
   }
+  // The ranks must start from the same fluid, whether or not they then keep only their part.
+  check_replicas(P, solver.steps());
+  const long particles = long(P.size());
+  const bool decomposed = run.decompose();
   auto snapshot = [&]() {
-    check_replicas(P, solver.steps());
+    if (!decomposed) check_replicas(P, solver.steps());
     write_collectively(rank, [&] {
       Snapshot s;
       s.step = solver.steps();
@@ -158,11 +163,8 @@ int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
   auto after_step = [&](const isph::StepStats& st) {
     ppe_total += st.ppe_iterations;
     const long step = solver.steps();
-    if (rank == 0 && step % settings.diagnostics_every == 0) {
-      double ke = 0.0;
-      for (std::size_t i = 0; i < P.size(); ++i)
-        if (P.kind[i] != isph::kWall)
-          ke += 0.5 * solver.config().density * P.volume * P.v[i].squaredNorm();
+    if (step % settings.diagnostics_every == 0) {
+      const double ke = run.kinetic_energy();
       write_on_rank_zero(rank, [&] {
         diagnostics->row({solver.time(), double(step), omp_get_wtime() - start,
                           double(st.ppe_iterations), st.max_speed, st.dt, st.ppe_residual,
@@ -175,8 +177,8 @@ int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
   std::string why, cause;
   const bool finished = run_to_end(run, settings, 1e-12, after_step, snapshot, progress, rank == 0,
                                    args.out, why, cause);
-  report.cost(solver.time(), solver.steps(), long(P.size()), omp_get_wtime() - start, ppe_total);
-  report.parallel(solver.row_parts(), solver.rows_shared());
+  report.cost(solver.time(), solver.steps(), particles, omp_get_wtime() - start, ppe_total);
+  report.parallel(solver.row_parts(), solver.rows_shared(), decomposed);
   if (!finished) {
     report.stopped(why, cause);
     return 1;
@@ -188,7 +190,7 @@ int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
     const long steps = solver.steps();
     std::printf(
         "done: t = %g s in %ld steps, %s wall, %.3g particle-steps/s, %.1f PPE iterations/step\n",
-        solver.time(), steps, format_duration(wall).c_str(), double(P.size()) * steps / wall,
+        solver.time(), steps, format_duration(wall).c_str(), double(particles) * steps / wall,
         steps ? double(ppe_total) / steps : 0.0);
     std::printf(
         "  time per part: neighbours %.0f%%, operators %.0f%%, assembly %.0f%%, solve %.0f%%, "
@@ -234,6 +236,10 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   const RunSettings settings = [&] {
     RunSettings s = parse_run_settings(given);
     s.coupled = true;
+    if (s.decompose.value_or(false))
+      throw CaseError(
+          "parallel.decompose = true is for fluid-only cases so far: a coupled case "
+          "shares the fluid's rows between the ranks instead (remove the key)");
     return s;
   }();
   const DemCaseConfig dem = dem_config(given);

@@ -30,9 +30,10 @@ void RunReport::cost(double time, long steps, long particles, double wall, long 
   result_.ppe_iterations_per_step = steps > 0 ? double(ppe) / double(steps) : 0.0;
 }
 
-void RunReport::parallel(int ranks, bool rows_shared) {
+void RunReport::parallel(int ranks, bool rows_shared, bool decomposed) {
   result_.ranks = ranks;
   result_.rows_shared = rows_shared;
+  result_.decomposed = decomposed;
 }
 
 void RunReport::stopped(const std::string& why, const std::string& cause) {

@@ -66,6 +66,7 @@ void write_run_result(const std::filesystem::path& file, const RunResult& r) {
                   {"ppe_iterations_per_step", number(r.ppe_iterations_per_step)},
                   {"ranks", r.ranks},
                   {"rows_shared", r.rows_shared},
+                  {"decomposed", r.decomposed},
                   {"metrics", metrics}};
   // A message with bytes that are not UTF-8 (a path, LIGGGHTS's words) must not lose the file.
   write_file_atomically(file, j.dump(2, ' ', false, json::error_handler_t::replace) + "\n");
@@ -104,6 +105,8 @@ std::optional<RunResult> read_run_result(const std::filesystem::path& file) {
   r.ranks = std::isfinite(number(j, "ranks")) ? int(number(j, "ranks")) : 1;
   r.rows_shared =
       j.contains("rows_shared") && j["rows_shared"].is_boolean() && j["rows_shared"].get<bool>();
+  r.decomposed =
+      j.contains("decomposed") && j["decomposed"].is_boolean() && j["decomposed"].get<bool>();
   if (j.contains("metrics") && j["metrics"].is_array())
     for (const auto& m : j["metrics"]) {
       if (!m.is_object() || text(m, "name").empty()) continue;

@@ -28,6 +28,7 @@ struct RunResult {
   double ppe_iterations_per_step = 0.0;
   int ranks = 1;             // MPI ranks of the run
   bool rows_shared = false;  // each rank computed its block of the fluid's rows (docs/parallel.md)
+  bool decomposed = false;   // each rank held only its own part of the fluid (docs/parallel.md)
   std::vector<MetricResult> metrics;
 };
 

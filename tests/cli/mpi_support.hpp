@@ -41,9 +41,11 @@ inline std::filesystem::path last_snapshot(const std::filesystem::path& dir) {
 // with the pressure solved over the ranks (amg) to 1e-10; returns the two runs' last snapshots.
 // A run that fails is a test failure (callers stop on ::testing::Test::HasFailure()), and so is
 // a run on several ranks whose fluid rows were not shared between them (result.json): it would
-// test the replicated stepping only.
+// test the replicated stepping only. A fluid-only run is decomposed unless ARGS say
+// parallel.decompose=false (docs/parallel.md); `coupled` runs never are.
 inline std::pair<std::filesystem::path, std::filesystem::path> run_on_one_and_many(
-    const std::string& scratch_name, const std::string& name, const std::string& args) {
+    const std::string& scratch_name, const std::string& name, const std::string& args,
+    bool coupled = false) {
   const auto dir = scratch(scratch_name);
   const std::string tight =
       " --quiet --set solver.preconditioner=amg --set solver.pressure_tolerance=1e-10 ";
@@ -55,12 +57,16 @@ inline std::pair<std::filesystem::path, std::filesystem::path> run_on_one_and_ma
   const std::string result = read_file(dir / "npN" / "result.json");
   EXPECT_NE(result.find("\"ranks\": " + std::to_string(ranks())), std::string::npos) << result;
   EXPECT_NE(result.find("\"rows_shared\": true"), std::string::npos) << result;
+  const bool decomposed = !coupled && args.find("parallel.decompose=false") == std::string::npos;
+  EXPECT_NE(result.find(std::string("\"decomposed\": ") + (decomposed ? "true" : "false")),
+            std::string::npos)
+      << result;
   return {last_snapshot(dir / "np1"), last_snapshot(dir / "npN")};
 }
 
 struct Fields {
   int dim = 0;
-  std::vector<double> x, v, p;  // sorted by particle id
+  std::vector<double> x, v, p;   // sorted by particle id
   std::vector<std::int64_t> id;  // sorted
 };
 

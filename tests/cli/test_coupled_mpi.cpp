@@ -11,8 +11,8 @@ namespace {
 
 TEST(CoupledMpi, SettlingGrainFollowsTheOneRankTrajectory) {
   // Unresolved: one fine grain settling at its terminal speed (0.15 m/s) after 0.1 s.
-  const auto [a_file, b_file] =
-      run_on_one_and_many("coupled_mpi_settling_grain", "settling_grain", "--set time.end=0.1");
+  const auto [a_file, b_file] = run_on_one_and_many("coupled_mpi_settling_grain", "settling_grain",
+                                                    "--set time.end=0.1", true);
   ASSERT_EQ(a_file.filename(), b_file.filename());
   const Fields a = read_fields(a_file, "dem"), b = read_fields(b_file, "dem");
   ASSERT_EQ(a.x.size(), b.x.size());
@@ -28,8 +28,8 @@ TEST(CoupledMpi, SettlingGrainFollowsTheOneRankTrajectory) {
 TEST(CoupledMpi, BuoyancyClumpTakesTheOneRankLoad) {
   // Resolved: the held clump's hydrodynamic force is its buoyancy, 9.759e-5 N.
   const auto [a_file, b_file] =
-      run_on_one_and_many("coupled_mpi_buoyancy_clump", "buoyancy_clump",
-                          "--set time.end=0.05");  // PMS solids: the rows stay replicated
+      run_on_one_and_many("coupled_mpi_buoyancy_clump", "buoyancy_clump", "--set time.end=0.05",
+                          true);  // coupled: the rows stay replicated
   ASSERT_EQ(a_file.filename(), b_file.filename());
   h5_read::File a(a_file.string()), b(b_file.string());
   const auto fa = a.read("bodies/force_hydro").f64, fb = b.read("bodies/force_hydro").f64;
