@@ -16,6 +16,7 @@ PACKAGES=(
   python3-h5py python3-matplotlib python3-pil   # plots (PIL: GIFs), run with /usr/bin/python3
   python3-numpy                     # scripts/cylinder_lbm_reference.py
   paraview                          # pvpython opens our XDMF in a test
+  time                              # /usr/bin/time: memory per rank in bench/mpi/run_ranks.sh
 )
 # Reference solvers outside the build and the tests, on request only (large):
 # ISPHDEM_REFERENCE=1 adds OpenFOAM for scripts/dam_break_vof_reference.py.

@@ -1,7 +1,10 @@
 """What an `isphdem run` printed and wrote, for the bench/mpi scripts: the particle count, steps,
 PPE iterations, setup and iteration ms per step and the exchanges' ms per step from the summary,
-the wall time and rows_shared from result.json (the summary line rounds the wall time)."""
+the wall time, rows_shared and decomposed from result.json (the summary line rounds the wall
+time), and the largest "maxrss_kb N" line /usr/bin/time wrote for a rank into LOG.rss (0
+without one)."""
 import json
+import os
 import re
 
 
@@ -13,6 +16,7 @@ def read(log, result_json):
         r"setup ([\d.e+]+) ms/step, iterations ([\d.e+]+) ms/step", text).groups())
     exchange = re.search(r"exchanges ([\d.e+-]+) ms/step", text)
     result = json.load(open(result_json))
+    rss = open(log + ".rss").read() if os.path.exists(log + ".rss") else ""
     return {
         "particles": int(m[1]) + int(m[2]),
         "steps": int(re.search(r"in (\d+) (?:fluid )?steps", text)[1]),
@@ -22,4 +26,6 @@ def read(log, result_json):
         "exchange_ms": float(exchange[1]) if exchange else 0.0,
         "wall_s": result["wall_seconds"],
         "rows_shared": bool(result.get("rows_shared")),
+        "decomposed": bool(result.get("decomposed")),
+        "max_rss_mb": max([int(k) for k in re.findall(r"maxrss_kb (\d+)", rss)] or [0]) / 1024,
     }
