@@ -99,6 +99,47 @@ TEST(FluidMpi, UnstableRunStopsEveryRankWithOneMessage) {
   EXPECT_NE(result.find("\"status\": \"stopped\""), std::string::npos) << result;
 }
 
+TEST(FluidMpi, ParticleLeavingOnOneRankStopsEveryRankWithItsMessage) {
+  // A block of water "falls" freely upwards out of the top of an open domain. Decomposed, the
+  // tall domain is cut across the block (rank 0 below), and the highest particles, which leave
+  // first, are the last rank's alone: rank 0 must print that rank's message, every rank must
+  // stop, and the snapshots stay valid.
+  const auto dir = scratch("fluid_mpi_particle_left");
+  write_file(dir / "case.toml", R"([case]
+dimension = 2
+[domain]
+min = [0.0, 0.0]
+max = [0.1, 0.4]
+[particles]
+spacing = 0.005
+[fluid]
+gravity = [0.0, 9.81]
+[[fluid.blocks]]
+min = [0.0, 0.25]
+max = [0.1, 0.35]
+[solver]
+preconditioner = "amg"
+[time]
+end = 0.3
+[output]
+interval = 0.05
+)");
+  const Result r = mpirun_run(ranks(), (dir / "case.toml").string() + " --out " +
+                                           (dir / "out").string());
+  std::printf("%s", r.output.c_str());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(count(r.output, "left the domain at (0.0"), 1);
+  EXPECT_NE(r.output.find(", 0.40"), std::string::npos);  // through the top
+  EXPECT_EQ(count(r.output, "complete and valid"), 1);
+  EXPECT_GE(count_snapshots(dir / "out"), 2);  // t = 0 and 0.05 s, before the block leaves
+  for (const auto& e : std::filesystem::directory_iterator(dir / "out"))
+    if (e.path().filename().string().rfind("snap_", 0) == 0)
+      EXPECT_EQ(read_fields(e.path()).id.size(), 400u) << e.path();
+  const std::string result = read_file(dir / "out" / "result.json");
+  EXPECT_NE(result.find("\"cause\": \"fluid_left_domain\""), std::string::npos) << result;
+  EXPECT_NE(result.find("\"decomposed\": true"), std::string::npos) << result;
+}
+
 TEST(FluidMpi, DecomposeWithoutADistributedSolverStopsWithTheFix) {
   // The vortex's own jacobi preconditioner solves on each rank alone: it cannot take the ranks'
   // parts of a decomposed fluid.
