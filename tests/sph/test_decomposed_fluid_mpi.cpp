@@ -129,5 +129,36 @@ TEST(DecomposedFluidMpi, DamBreakMatchesOneProcess) {
   expect_same_as_one_process("dam_break_2d", 20, std::sqrt(9.81 * 0.1), 0.0, 1e-5);
 }
 
+TEST(DecomposedFluidMpi, DamBreakFrontIsRebalanced) {
+  // As the column collapses, its particles run from the boxes around it into those by the far
+  // wall: the boxes are cut anew whenever the fullest rank holds more than 1.1 times the mean, so
+  // that after every step's migration the load stays within that bound.
+  const CaseFile c = CaseFile::load(
+      example("dam_break_2d"), {"solver.preconditioner=\"amg\"", "time.end=0.1"}, all_fluid_keys());
+  FluidRun<2> run(build_fluid_scene<2>(c), parse_run_settings(c));
+  auto rcb = std::make_shared<isph::RcbDecomposition<2>>(MPI_COMM_WORLD, run.solver().domain());
+  run.solver().decompose(rcb);
+  double worst = 0.0;
+  run.run_until(0.1, [&](const isph::StepStats&) {
+    double counts[2] = {double(run.solver().particles().size()),
+                        double(run.solver().particles().size())};
+    MPI_Allreduce(MPI_IN_PLACE, &counts[0], 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    MPI_Allreduce(MPI_IN_PLACE, &counts[1], 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    worst = std::max(worst, counts[0] / (counts[1] / ranks()));
+  });
+  const std::vector<Row> all = gather(run.solver().particles());
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank == 0)
+    std::printf(
+        "dam break to t = 0.1 s on %d ranks: %ld steps, %d cuts, fullest rank at most "
+        "%.3f of the mean after a step\n",
+        ranks(), run.solver().steps(), rcb->cuts(), worst);
+  EXPECT_GT(rcb->cuts(), 1);
+  // A step's migration follows the last cut: a rank may gain what crossed in that one step.
+  EXPECT_LE(worst, 1.1 + 0.02);
+  EXPECT_EQ(all.size(), 4658u);
+}
+
 }  // namespace
 }  // namespace isphdem::validation
