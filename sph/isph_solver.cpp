@@ -177,13 +177,24 @@ std::string IsphSolver<Dim>::describe_fastest() const {
   for (int i = 0; i < static_cast<int>(P.size()); ++i)
     if (P.kind[i] != kWall && P.kind[i] != kSolid && (fast < 0 || P.v[i].norm() > P.v[fast].norm()))
       fast = i;
-  if (fast < 0) return "no moving particle";
   static const char* const names[] = {"fluid", "wall", "solid (PMS)", "forcing-zone"};
-  const std::string fastest = std::string("the fastest is ") + names[P.kind[fast]] + " particle " +
-                              std::to_string(P.id[fast]) + " at " + format_vector(P.x[fast]) +
-                              " m (" + format_number(P.v[fast].norm(), 4) + " m/s)";
-  // Its neighbours were listed elsewhere, or (decomposed) partly in the halo dropped since.
-  if (fast < first_ || fast >= last_ || decomposition_) return fastest;
+  const std::string fastest = fast < 0 ? std::string("no moving particle")
+                                       : std::string("the fastest is ") + names[P.kind[fast]] +
+                                             " particle " + std::to_string(P.id[fast]) + " at " +
+                                             format_vector(P.x[fast]) + " m (" +
+                                             format_number(P.v[fast].norm(), 4) + " m/s)";
+  if (decomposition_) {
+    // Each process knows its own fastest: the fastest of all is named (collective).
+    const double mine = fast < 0 ? -1.0 : P.v[fast].norm();
+    const double best = share_->max(mine);
+    std::vector<char> text;
+    if (fast >= 0 && mine == best)
+      text.assign(fastest.c_str(), fastest.c_str() + fastest.size() + 1);
+    const std::vector<char> all = share_->concatenate(text);
+    return all.empty() ? fastest : std::string(all.data());
+  }
+  if (fast < 0) return fastest;
+  if (fast < first_ || fast >= last_) return fastest;  // its neighbours were listed elsewhere
   // The neighbour list is the step's own (built before the particles moved): what the fastest
   // particle's equations saw. A fluid particle whose support is mostly solid sits in a pocket
   // between bodies (the semi-resolved erosion runs broke up from one).

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <regex>
 
 #include "mpi_support.hpp"
 
@@ -85,6 +86,11 @@ TEST(FluidMpi, UnstableRunStopsEveryRankWithOneMessage) {
   EXPECT_NE(r.exit_code, 0);
   EXPECT_EQ(count(r.output, "beyond the CFL limit"), 1);
   EXPECT_EQ(count(r.output, "complete and valid"), 1);
+  // The particle named is the fastest of all ranks (decomposed, each rank knows its own).
+  std::smatch quoted, named;
+  ASSERT_TRUE(std::regex_search(r.output, quoted, std::regex(R"(max \|u\| = ([0-9.]+) m/s)")));
+  ASSERT_TRUE(std::regex_search(r.output, named, std::regex(R"(m \(([0-9.]+) m/s\))")));
+  EXPECT_EQ(quoted[1], named[1]);
   int snaps = 0;
   for (const auto& e : std::filesystem::directory_iterator(dir / "out")) {
     if (e.path().filename().string().rfind("snap_", 0) != 0) continue;
@@ -124,17 +130,19 @@ end = 0.3
 [output]
 interval = 0.05
 )");
-  const Result r = mpirun_run(ranks(), (dir / "case.toml").string() + " --out " +
-                                           (dir / "out").string());
+  const Result r =
+      mpirun_run(ranks(), (dir / "case.toml").string() + " --out " + (dir / "out").string());
   std::printf("%s", r.output.c_str());
   EXPECT_NE(r.exit_code, 0);
   EXPECT_EQ(count(r.output, "left the domain at (0.0"), 1);
   EXPECT_NE(r.output.find(", 0.40"), std::string::npos);  // through the top
   EXPECT_EQ(count(r.output, "complete and valid"), 1);
   EXPECT_GE(count_snapshots(dir / "out"), 2);  // t = 0 and 0.05 s, before the block leaves
-  for (const auto& e : std::filesystem::directory_iterator(dir / "out"))
-    if (e.path().filename().string().rfind("snap_", 0) == 0)
+  for (const auto& e : std::filesystem::directory_iterator(dir / "out")) {
+    if (e.path().filename().string().rfind("snap_", 0) == 0) {
       EXPECT_EQ(read_fields(e.path()).id.size(), 400u) << e.path();
+    }
+  }
   const std::string result = read_file(dir / "out" / "result.json");
   EXPECT_NE(result.find("\"cause\": \"fluid_left_domain\""), std::string::npos) << result;
   EXPECT_NE(result.find("\"decomposed\": true"), std::string::npos) << result;
@@ -144,9 +152,9 @@ TEST(FluidMpi, DecomposeWithoutADistributedSolverStopsWithTheFix) {
   // The vortex's own jacobi preconditioner solves on each rank alone: it cannot take the ranks'
   // parts of a decomposed fluid.
   const auto dir = scratch("fluid_mpi_decompose_jacobi");
-  const Result r = mpirun_run(ranks(), example("taylor_green_2d") + " --out " +
-                                           (dir / "out").string() +
-                                           " --set time.end=0.01 --set parallel.decompose=true");
+  const Result r =
+      mpirun_run(ranks(), example("taylor_green_2d") + " --out " + (dir / "out").string() +
+                              " --set time.end=0.01 --set parallel.decompose=true");
   std::printf("%s", r.output.c_str());
   EXPECT_NE(r.exit_code, 0);
   EXPECT_EQ(count(r.output, "solver.preconditioner = \"amg\""), 1);
