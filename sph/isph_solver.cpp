@@ -59,6 +59,20 @@ void IsphSolver<Dim>::decompose(std::shared_ptr<Decomposition<Dim>> d) {
   decomposition_ = d;
   share_ = std::move(d);
   unit_response_.resize(0);
+  have_q_ = false;
+}
+
+template <int Dim>
+void IsphSolver<Dim>::redistribute() {
+  if (!decomposition_) return;
+  // q travels with the particles, as it follows them through the sort, so that it is reused as
+  // on one process.
+  std::vector<double> q;
+  const bool carry = have_q_;
+  if (carry) q.assign(unit_response_.data(), unit_response_.data() + unit_response_.size());
+  decomposition_->migrate(particles_, carry ? &q : nullptr);
+  if (carry) unit_response_ = Eigen::Map<const Eigen::VectorXd>(q.data(), q.size());
+  redistributed_ = true;
 }
 
 template <int Dim>
@@ -97,15 +111,8 @@ StepStats IsphSolver<Dim>::step(double dt) {
   if (!(dt > 0.0) || !std::isfinite(dt)) throw SimulationError("time step must be positive");
   blocked_ = decomposition_ || (share_->parts() > 1 && linear_solver_->distributed_rows() &&
                                 unit_solver_->distributed_rows());
-  if (decomposition_) {
-    // q travels with the particles, as it follows them through the sort, so that it is reused
-    // as on one process.
-    std::vector<double> q;
-    const bool carry = unit_response_.size() > 0;
-    if (carry) q.assign(unit_response_.data(), unit_response_.data() + unit_response_.size());
-    decomposition_->migrate(particles_, carry ? &q : nullptr);
-    if (carry) unit_response_ = Eigen::Map<const Eigen::VectorXd>(q.data(), q.size());
-  }
+  if (!redistributed_) redistribute();
+  redistributed_ = false;
   update_forcing_kinds();
   find_neighbors();  // the pair geometry and weights every stage below reuses
   {
@@ -142,9 +149,11 @@ StepStats IsphSolver<Dim>::step(double dt) {
     advect(dt, stats);
   }
   if (decomposition_) {
+    grad_p_.resize(last_);
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < last_; ++i) grad_p_[i] = gradient(nb_, op_, particles_.p, i);
     decomposition_->drop_halo(particles_);
-    if (unit_response_.size() > 0)
-      unit_response_.conservativeResize(static_cast<Eigen::Index>(particles_.size()));
+    if (have_q_) unit_response_.conservativeResize(static_cast<Eigen::Index>(particles_.size()));
   }
   time_ += dt;
   ++steps_;

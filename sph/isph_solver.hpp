@@ -162,8 +162,17 @@ class IsphSolver {
   // pressure solver (solver.preconditioner = "amg") and a case without PMS solids.
   void decompose(std::shared_ptr<Decomposition<Dim>> d);
   bool decomposed() const { return decomposition_ != nullptr; }
+  // Decomposed: sends the particles that left this process's region to their owners. step()
+  // does it at its start unless called since the last step: a coupled driver calls it before its
+  // stages read the particles, so that they map the set the step steps. Collective; nothing to
+  // do when not decomposed.
+  void redistribute();
+  // The processes to reduce over when the fluid is decomposed (sums and maxima of what each
+  // process computed from its own particles), else null.
+  const RowShare* decomposition() const { return decomposed_share(); }
   // grad p of the last step at the given rows (storage order), on every process: with shared
   // rows only the process that computed a row holds its neighbour list (neighbors()).
+  // Decomposed: at this process's own rows, kept from the step (its halo is gone after it).
   std::vector<Vec<Dim>> pressure_gradient_at(const std::vector<int>& rows) const;
   // Whether the last step was computed in shared blocks of rows, and between how many processes
   // they may be shared (1 without share_rows).
@@ -219,7 +228,11 @@ class IsphSolver {
   std::unique_ptr<LinearSolver> unit_solver_;  // for spread_pinned_source's q (its own setup)
   std::shared_ptr<const RowShare> share_ = std::make_shared<RowShare>();
   std::shared_ptr<Decomposition<Dim>> decomposition_;  // set: the same object as share_
-  bool blocked_ = false;                               // this step's rows are shared (share_rows)
+  bool redistributed_ = false;                         // since the last step
+  // Decomposed: whether q is valid, the same on every process (a process owning no particle
+  // holds an empty q all the same).
+  bool have_q_ = false;
+  bool blocked_ = false;      // this step's rows are shared (share_rows)
   int first_ = 0, last_ = 0;  // the rows this process computes in this step
   double n0_ = 0.0;
   double time_ = 0.0;
@@ -233,6 +246,7 @@ class IsphSolver {
   PorousMedium<Dim> porous_;
   std::vector<double> number_density_, divergence_r_, rhs_, eddy_viscosity_;
   std::vector<double> surface_depth_;  // empty unless surface_refill acts
+  std::vector<Vec<Dim>> grad_p_;       // decomposed: the owned rows' grad p of the last step
   double max_eddy_viscosity_ = 0.0;
   std::vector<Vec<Dim>> u_star_, wall_ghost_, shift_;
   std::vector<uint8_t> operator_mode_, full_support_, shift_mode_, dry_wall_;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace isph {
 
@@ -11,18 +12,27 @@ void PorousMedium<Dim>::prepare(const Particles<Dim>& P, const Neighbors<Dim>& n
                                 const RowShare* share) {
   const int n = static_cast<int>(P.size());
   active_ = false;
+  std::string error;
   for (int i = 0; i < n; ++i) {
     if (P.kind[i] == kWall) continue;
     const double eps = P.porosity[i], K = P.resistance[i];
-    if (!(eps > 0.0 && eps <= 1.0) || !(K >= 0.0) || !std::isfinite(K) ||
-        !P.solid_velocity[i].allFinite())
-      throw std::invalid_argument(
-          "particle " + std::to_string(P.id[i]) + ": porosity " + std::to_string(eps) +
-          ", resistance " + std::to_string(K) +
-          " 1/s; porosity must lie in (0, 1] and resistance be finite and >= 0 (check "
-          "unresolved.min_porosity and the drag law)");
+    if ((!(eps > 0.0 && eps <= 1.0) || !(K >= 0.0) || !std::isfinite(K) ||
+         !P.solid_velocity[i].allFinite()) &&
+        error.empty())
+      error = "particle " + std::to_string(P.id[i]) + ": porosity " + std::to_string(eps) +
+              ", resistance " + std::to_string(K) +
+              " 1/s; porosity must lie in (0, 1] and resistance be finite and >= 0 (check "
+              "unresolved.min_porosity and the drag law)";
     if (eps != 1.0 || K != 0.0) active_ = true;
   }
+  if (share && share->decomposed()) {
+    // The particle is on some processes only: all stop, with the first one's message.
+    std::vector<char> mine;
+    if (!error.empty()) mine.assign(error.c_str(), error.c_str() + error.size() + 1);
+    const std::vector<char> all = share->concatenate(mine);
+    if (!all.empty()) error = all.data();
+  }
+  if (!error.empty()) throw std::invalid_argument(error);
   // Decomposed, another process's particles may be porous: all take the same branch below.
   if (share && share->decomposed()) active_ = share->max(active_ ? 1.0 : 0.0) > 0.0;
   coefficient_.assign(n, 1.0);

@@ -22,7 +22,7 @@ void IsphSolver<Dim>::find_neighbors() {
   const int n = static_cast<int>(particles_.size());
   first_ = blocked_ ? share_->first(n) : 0;
   last_ = blocked_ ? share_->last(n) : n;
-  if (decomposition_ && unit_response_.size() > 0) {
+  if (decomposition_ && have_q_) {
     // pinned_lambda reads q at the pin's neighbours, some of which may be in the halo.
     unit_response_.conservativeResize(n);
     share_->exchange_rows(unit_response_.data(), sizeof(double), n);

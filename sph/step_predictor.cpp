@@ -80,7 +80,8 @@ void IsphSolver<Dim>::compute_eddy_viscosity() {
       eddy_viscosity_[i] = cs_dx * cs_dx * std::sqrt(2.0 * S.squaredNorm());
     }
     exchange(eddy_viscosity_);
-    max_eddy_viscosity_ = *std::max_element(eddy_viscosity_.begin(), eddy_viscosity_.end());
+    max_eddy_viscosity_ =
+        n > 0 ? *std::max_element(eddy_viscosity_.begin(), eddy_viscosity_.end()) : 0.0;
     if (decomposition_) max_eddy_viscosity_ = share_->max(max_eddy_viscosity_);
   }
 }

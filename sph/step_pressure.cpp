@@ -57,8 +57,9 @@ void IsphSolver<Dim>::solve_pressure(StepStats& stats) {
   // Warm start from the pinned system's own last solution, not the spread one: the two differ by
   // lambda q, a smooth field over the whole domain that BiCGSTAB would otherwise have to remove
   // again every step (fluidization tank: 83 -> 140 iterations per step).
-  const bool same_pin = system_.pinned_id >= 0 && unit_response_.size() == n &&
-                        system_.pinned_id == unit_response_pin_;
+  const bool q_ready = decomposition_ ? have_q_ : unit_response_.size() == n;
+  const bool same_pin =
+      system_.pinned_id >= 0 && q_ready && system_.pinned_id == unit_response_pin_;
   if (config_.spread_pin && same_pin) pressure_ += unit_response_lambda_ * unit_response_;
   // Physical pressure scale (hydrostatic head over the box plus dynamic pressure) per row.
   const double extent = domain_.length().maxCoeff();
@@ -88,6 +89,7 @@ void IsphSolver<Dim>::solve_pressure(StepStats& stats) {
       fresh = std::isfinite(u.residual) && u.residual <= 1e3 * config_.pressure_solver.tolerance;
       unit_response_pin_ = system_.pinned_id;
       if (!fresh) unit_response_.resize(0);
+      have_q_ = fresh;
       // pinned_lambda reads q at the pin's neighbours, some of which may be in the halo.
       if (fresh && decomposition_) share_->exchange_rows(unit_response_.data(), sizeof(double), n);
     }

@@ -6,6 +6,16 @@
 
 namespace isphdem {
 
+double bed_height(const DemState& state, const Vec3& up) {
+  std::vector<double> h;
+  for (const auto& a : state.atoms)
+    if (a.body == -1) h.push_back(a.x[0] * up[0] + a.x[1] * up[1] + a.x[2] * up[2]);
+  if (h.empty()) return std::nan("");
+  std::sort(h.begin(), h.end());
+  if (h.size() < 20) return h.back();
+  return h[static_cast<std::size_t>(0.95 * double(h.size() - 1))];
+}
+
 template <int Dim>
 int ErosionDiagnostics<Dim>::across_axis() const {
   // The horizontal axis of the fluid plane: the first axis with no gravity component.

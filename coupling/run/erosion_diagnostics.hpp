@@ -13,6 +13,11 @@
 
 namespace isphdem {
 
+// Height of the fine-grain bed: the 95th percentile of the grain centres' heights along -g
+// (the top of the bed without the few grains thrown up above it), or the largest height when
+// there are fewer than 20 grains. NaN without grains.
+double bed_height(const DemState& state, const Vec3& up);
+
 struct ErosionMeasures {
   int fines_above = 0;          // free spheres entirely above the initial layer surface
   double fines_above_mass = 0;  // their mass [kg] (grain density x sphere volume)

@@ -98,8 +98,8 @@ bool run_to_end(Run& run, const RunSettings& settings, double end_tolerance,
 
 // A fluid-only case. On several ranks (mpirun) with solver.preconditioner = "amg" each rank holds
 // and steps its own part of the fluid (FluidRun::decompose), the pressure equation one system
-// over the ranks; with parallel.decompose = false every rank holds all particles and computes its
-// block of rows. The ranks write each snapshot together (each its own rows); rank 0 talks and
+// over the ranks; with parallel.decompose = false every rank holds all particles and computes
+// its block of rows. The ranks write each snapshot together (each its own rows); rank 0 talks and
 // writes diagnostics.csv.
 template <int Dim>
 int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
@@ -202,19 +202,6 @@ int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
   return 0;
 }
 
-// Height of the fine-grain bed: the 95th percentile of the grain centres' heights along -g
-// (the top of the bed without the few grains thrown up above it), or the largest height when
-// there are fewer than 20 grains. NaN without grains.
-double bed_height(const DemState& state, const Vec3& up) {
-  std::vector<double> h;
-  for (const auto& a : state.atoms)
-    if (a.body == -1) h.push_back(a.x[0] * up[0] + a.x[1] * up[1] + a.x[2] * up[2]);
-  if (h.empty()) return std::nan("");
-  std::sort(h.begin(), h.end());
-  if (h.size() < 20) return h.back();
-  return h[static_cast<std::size_t>(0.95 * double(h.size() - 1))];
-}
-
 DemCaseConfig dem_config(const CaseFile& c) {
   const auto* table = c.table()["dem"].as_table();
   if (!table) throw CaseError("'dem' must be a table: [dem] with script and substeps");
@@ -225,9 +212,10 @@ DemCaseConfig dem_config(const CaseFile& c) {
   }
 }
 
-// A case with [fluid] and [dem]: fine grains (free spheres) coupled unresolved. The fluid is
-// replicated on every rank (the DEM state is gathered to all); the ranks write each snapshot
-// together, the grains from rank 0.
+// A case with [fluid] and [dem]: fine grains (free spheres) coupled unresolved, clumps resolved.
+// The DEM state is gathered to every rank; the fluid is decomposed over the ranks as in a
+// fluid-only case unless PMS bodies keep it on every rank (shared rows). The ranks write each
+// snapshot together, the grains from rank 0.
 template <int Dim>
 int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report) {
   int rank = 0;
@@ -236,10 +224,6 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   const RunSettings settings = [&] {
     RunSettings s = parse_run_settings(given);
     s.coupled = true;
-    if (s.decompose.value_or(false))
-      throw CaseError(
-          "parallel.decompose = true is for fluid-only cases so far: a coupled case "
-          "shares the fluid's rows between the ranks instead (remove the key)");
     return s;
   }();
   const DemCaseConfig dem = dem_config(given);
@@ -325,6 +309,9 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     for (const auto& line : auto_lines) std::printf("  %s\n", line.c_str());
     std::fflush(stdout);
   }
+  check_replicas(P, solver.steps());  // the ranks start from the same fluid
+  const long particles = long(P.size());
+  const bool decomposed = run.decompose();  // unresolved only: PMS bodies keep shared rows
   // Grain density for the mass of ejected fines: that of the clumps when there are any (the
   // DEM state has no per-atom mass).
   double grain_density = std::nan("");
@@ -342,7 +329,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   }
   auto snapshot = [&]() {
     const DemState& state = backend.state();  // collective
-    check_replicas(P, solver.steps());
+    if (!decomposed) check_replicas(P, solver.steps());
     Snapshot s;
     s.step = solver.steps();
     s.time = solver.time();
@@ -361,16 +348,23 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     const long step = solver.steps();
     if (step % settings.diagnostics_every == 0) {
       const DemState& state = backend.state();  // collective
+      // What each rank's own fluid particles give, over all ranks (collective when decomposed).
+      double emin = 1.0;
+      for (std::size_t i = 0; i < P.size(); ++i)
+        if (P.kind[i] != isph::kWall) emin = std::min(emin, P.porosity[i]);
+      ErosionMeasures em = erosion.measure(state, P);
+      if (const isph::RowShare* ranks = solver.decomposition()) {
+        emin = -ranks->max(-emin);
+        em.max_pore_speed_ratio = ranks->max(em.max_pore_speed_ratio);
+      }
       if (rank == 0) {
         auto speed = [](const Vec3& v) {
           return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
         };
-        double vmax = 0.0, body_vmax = 0.0, emin = 1.0;
+        double vmax = 0.0, body_vmax = 0.0;
         for (const auto& a : state.atoms)
           if (a.body == -1) vmax = std::max(vmax, speed(a.v));
         for (const auto& b : state.bodies) body_vmax = std::max(body_vmax, speed(b.v));
-        for (std::size_t i = 0; i < P.size(); ++i)
-          if (P.kind[i] != isph::kWall) emin = std::min(emin, P.porosity[i]);
         double drag_up = 0.0, res_up = 0.0;
         std::size_t floored = 0;
         if (unresolved) {  // coupling.model = "resolved" has no porosity/drag stage
@@ -404,7 +398,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
                                 t.dem,
                                 t.coupling,
                                 t.fluid};
-        for (double v : ErosionDiagnostics<Dim>::row(erosion.measure(state, P))) row.push_back(v);
+        for (double v : ErosionDiagnostics<Dim>::row(em)) row.push_back(v);
         write_on_rank_zero(rank, [&] { diagnostics->row(row); });
       }
     }
@@ -414,8 +408,8 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   const bool finished = run_to_end(run, settings, 1e-9, after_step, snapshot, progress, rank == 0,
                                    args.out, why, cause);
   backend.finalize();
-  report.cost(solver.time(), solver.steps(), long(P.size()), omp_get_wtime() - start, ppe_total);
-  report.parallel(solver.row_parts(), solver.rows_shared());
+  report.cost(solver.time(), solver.steps(), particles, omp_get_wtime() - start, ppe_total);
+  report.parallel(solver.row_parts(), solver.rows_shared(), decomposed);
   if (!finished) {
     report.stopped(why, cause);
     return 1;

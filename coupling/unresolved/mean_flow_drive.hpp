@@ -53,6 +53,16 @@ class MeanFlowDrive final : public CouplingStage<Dim> {
           P.porosity[i] / (isph::virtual_mass_coefficient(P.porosity[i]) + dt_ * P.resistance[i]);
       n += 1.0;
     }
+    if (const isph::RowShare* ranks = solver.decomposition()) {  // each process its particles
+      double sums[Dim + 2];
+      for (int a = 0; a < Dim; ++a) sums[a] = mean[a];
+      sums[Dim] = gain;
+      sums[Dim + 1] = n;
+      ranks->sum_in_place(sums, Dim + 2);
+      for (int a = 0; a < Dim; ++a) mean[a] = sums[a];
+      gain = sums[Dim];
+      n = sums[Dim + 1];
+    }
     if (n == 0.0) return;
     mean /= n;
     gain /= n;

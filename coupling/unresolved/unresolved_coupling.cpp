@@ -135,6 +135,26 @@ void UnresolvedCoupling<Dim>::after_fluid_step(const DemState&, const isph::Isph
       grad_at[k] += field_.weights.weight[e] * grad_p[r];
       wsum[k] += field_.weights.weight[e];
     }
+  std::size_t floored = field_.floored;
+  if (const isph::RowShare* ranks = solver.decomposition()) {
+    // Decomposed, each process distributed its own particles' reactions: every grain takes the
+    // shares of all processes (the same sums on every process, keyed by the grains' common order).
+    std::vector<double> sums;
+    for (std::size_t k = 0; k < grains_.size(); ++k) {
+      for (int a = 0; a < Dim; ++a) sums.insert(sums.end(), {gl.force[k][a], grad_at[k][a]});
+      sums.push_back(wsum[k]);
+    }
+    for (int a = 0; a < Dim; ++a) sums.push_back(balance_.fluid_resistance[a]);
+    sums.push_back(double(field_.floored));
+    if (!sums.empty()) ranks->sum_in_place(sums.data(), sums.size());
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < grains_.size(); ++k) {
+      for (int a = 0; a < Dim; ++a) gl.force[k][a] = sums[at++], grad_at[k][a] = sums[at++];
+      wsum[k] = sums[at++];
+    }
+    for (int a = 0; a < Dim; ++a) balance_.fluid_resistance[a] = sums[at++];
+    floored = static_cast<std::size_t>(sums[at]);
+  }
   // Images are summed into their grain (same tag) before the pressure force: the real grain and
   // its images see one field from both sides of the periodic face.
   for (std::size_t k = 0; k < grains_.size(); ++k) {
@@ -146,7 +166,7 @@ void UnresolvedCoupling<Dim>::after_fluid_step(const DemState&, const isph::Isph
     wsum[o] += wsum[k];
   }
   balance_.grains = 0;
-  balance_.floored = field_.floored;
+  balance_.floored = floored;
   for (std::size_t k = 0; k < grains_.size(); ++k) {
     if (owner_[k] != k) continue;
     ++balance_.grains;

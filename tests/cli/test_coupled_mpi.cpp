@@ -10,9 +10,10 @@ namespace isphdem::cli {
 namespace {
 
 TEST(CoupledMpi, SettlingGrainFollowsTheOneRankTrajectory) {
-  // Unresolved: one fine grain settling at its terminal speed (0.15 m/s) after 0.1 s.
-  const auto [a_file, b_file] = run_on_one_and_many("coupled_mpi_settling_grain", "settling_grain",
-                                                    "--set time.end=0.1", true);
+  // Unresolved: one fine grain settling at its terminal speed (0.15 m/s) after 0.1 s; the fluid
+  // decomposed over the ranks, the drag on the grain summed over them.
+  const auto [a_file, b_file] =
+      run_on_one_and_many("coupled_mpi_settling_grain", "settling_grain", "--set time.end=0.1");
   ASSERT_EQ(a_file.filename(), b_file.filename());
   const Fields a = read_fields(a_file, "dem"), b = read_fields(b_file, "dem");
   ASSERT_EQ(a.x.size(), b.x.size());
@@ -25,11 +26,51 @@ TEST(CoupledMpi, SettlingGrainFollowsTheOneRankTrajectory) {
   EXPECT_LE(dv, 1e-6 * max_abs(a.v));
 }
 
+TEST(CoupledMpi, ErosionLayerMatchesOneRank) {
+  // The reduced erosion layer (unresolved, 32 fines and 6 clumps as spheres' porosity), 200
+  // steps: the fluid decomposed, the drag of each grain summed over the ranks that hold fluid
+  // around it. Positions in dx (1 mm) and grain radii, velocities in v_in (5 mm/s).
+  const std::string dir = std::string(ISPHDEM_SOURCE_DIR) + "/examples/internal_erosion_2d";
+  ASSERT_TRUE(std::filesystem::exists(dir + "/packing_reduced.restart"))
+      << "pack the layer first (ctest runs the erosion_reduced_packing fixture)";
+  const auto out = scratch("coupled_mpi_erosion_layer");
+  for (const int np : {1, ranks()}) {
+    const Result r = mpirun_run(
+        np, dir + "/reduced.toml --out " + (out / std::to_string(np)).string() +
+                " --quiet --set solver.preconditioner=amg --set solver.pressure_tolerance=1e-10"
+                " --set time.end=0.02 --set output.interval=0.02");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+  }
+  const std::string result = read_file(out / std::to_string(ranks()) / "result.json");
+  EXPECT_NE(result.find("\"decomposed\": true"), std::string::npos) << result;
+  const auto a_file = last_snapshot(out / "1"),
+             b_file = last_snapshot(out / std::to_string(ranks()));
+  ASSERT_EQ(a_file.filename(), b_file.filename());
+  const Fields ga = read_fields(a_file, "dem"), gb = read_fields(b_file, "dem");
+  const Fields fa = read_fields(a_file), fb = read_fields(b_file);
+  ASSERT_EQ(ga.id, gb.id);
+  ASSERT_EQ(fa.id, fb.id);
+  const double grain_dx = max_difference(ga.x, gb.x) / 1e-3,
+               grain_dv = max_difference(ga.v, gb.v) / 5e-3;
+  const double fluid_dx = max_difference(fa.x, fb.x) / 1e-3,
+               fluid_dv = max_difference(fa.v, fb.v) / 5e-3;
+  const double dp = max_difference(fa.p, fb.p) / max_abs(fa.p);
+  std::printf(
+      "erosion layer, 1 vs %d ranks at %s: grains |dx| = %.2e dx, |dv| = %.2e v_in; "
+      "fluid |dx| = %.2e dx, |dv| = %.2e v_in, |dp| = %.2e max|p|\n",
+      ranks(), a_file.filename().c_str(), grain_dx, grain_dv, fluid_dx, fluid_dv, dp);
+  EXPECT_LE(grain_dx, 1e-6);
+  EXPECT_LE(grain_dv, 1e-6);
+  EXPECT_LE(fluid_dx, 1e-6);
+  EXPECT_LE(fluid_dv, 1e-6);
+  EXPECT_LE(dp, 1e-6);
+}
+
 TEST(CoupledMpi, BuoyancyClumpTakesTheOneRankLoad) {
   // Resolved: the held clump's hydrodynamic force is its buoyancy, 9.759e-5 N.
   const auto [a_file, b_file] =
       run_on_one_and_many("coupled_mpi_buoyancy_clump", "buoyancy_clump", "--set time.end=0.05",
-                          true);  // coupled: the rows stay replicated
+                          true);  // PMS bodies: the rows stay shared
   ASSERT_EQ(a_file.filename(), b_file.filename());
   h5_read::File a(a_file.string()), b(b_file.string());
   const auto fa = a.read("bodies/force_hydro").f64, fb = b.read("bodies/force_hydro").f64;

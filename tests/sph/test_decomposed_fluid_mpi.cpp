@@ -18,17 +18,14 @@
 #include <map>
 
 #include "case_path.hpp"
+#include "mpi_world.hpp"
 #include "rcb_decomposition.hpp"
 #include "run/fluid_run.hpp"
 
 namespace isphdem::validation {
 namespace {
 
-int ranks() {
-  int n = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &n);
-  return n;
-}
+using isph::test::ranks;
 
 struct Row {
   int64_t id;
@@ -99,9 +96,7 @@ void expect_same_as_one_process(const std::string& name, int steps, double speed
   std::sort(ids.begin(), ids.end());
   const bool each_once =
       ids.size() == total && std::adjacent_find(ids.begin(), ids.end()) == ids.end();
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  if (rank == 0)
+  if (isph::test::rank() == 0)
     std::printf(
         "%s, %d steps, decomposed over %d ranks (%zu of %zu particles on rank 0 at the start, %d "
         "cut(s)): max |dx| = %.2e dx, max |dv| = %.2e U, max |dp| = %.2e max|p|; PPE iterations "
@@ -147,9 +142,7 @@ TEST(DecomposedFluidMpi, DamBreakFrontIsRebalanced) {
     worst = std::max(worst, counts[0] / (counts[1] / ranks()));
   });
   const std::vector<Row> all = gather(run.solver().particles());
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  if (rank == 0)
+  if (isph::test::rank() == 0)
     std::printf(
         "dam break to t = 0.1 s on %d ranks: %ld steps, %d cuts, fullest rank at most "
         "%.3f of the mean after a step\n",

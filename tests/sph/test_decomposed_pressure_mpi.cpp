@@ -14,30 +14,21 @@
 
 #include "global_numbering.hpp"
 #include "manufactured_pressure.hpp"
+#include "mpi_world.hpp"
 #include "particle_exchange.hpp"
 #include "rcb_tree.hpp"
 
 namespace isph {
 namespace {
 
+using test::global_sum;
+using test::rank;
+using test::ranks;
+
 constexpr double kDx = 0.02;
 
-int rank() {
-  int r = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &r);
-  return r;
-}
-int ranks() {
-  int n = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &n);
-  return n;
-}
 double global_max(double v) {
   MPI_Allreduce(MPI_IN_PLACE, &v, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-  return v;
-}
-long global_sum(long v) {
-  MPI_Allreduce(MPI_IN_PLACE, &v, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
   return v;
 }
 

@@ -11,24 +11,18 @@
 #include <set>
 
 #include "lattice.hpp"
+#include "mpi_world.hpp"
 #include "particle_exchange.hpp"
 #include "rcb_tree.hpp"
 
 namespace isph {
 namespace {
 
-constexpr double kDx = 0.02;
+using test::global_sum;
+using test::rank;
+using test::ranks;
 
-int rank() {
-  int r = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &r);
-  return r;
-}
-int ranks() {
-  int n = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &n);
-  return n;
-}
+constexpr double kDx = 0.02;
 
 Domain<2> box(bool periodic) {
   Domain<2> d;
@@ -59,11 +53,6 @@ Particles<2> dealt_lattice(const Domain<2>& d) {
   all.permute(mine);
   all.for_each_array([&](auto& a) { a.resize(mine.size()); });
   return all;
-}
-
-long global_sum(long v) {
-  MPI_Allreduce(MPI_IN_PLACE, &v, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
-  return v;
 }
 
 // Everybody's particles (id, position) on every rank.
