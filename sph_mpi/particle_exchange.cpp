@@ -42,12 +42,15 @@ HaloPlan add_halo(MPI_Comm comm, const RcbTree<Dim>& tree, double width, Particl
   MPI_Comm_rank(comm, &rank);
   HaloPlan plan;
   plan.owned = static_cast<int>(p.size());
-  // Every owned particle against every other box: O(N P), to be narrowed to the boxes that
-  // touch this one when the rank count grows.
+  // Every owned particle against the boxes within `width` of this rank's box only (an owned
+  // particle lies in that box): O(N) per rank for a fixed number of neighbouring boxes.
+  std::vector<int> near;
+  for (int r = 0; r < size; ++r)
+    if (r != rank && tree.box_distance(rank, r) < width) near.push_back(r);
   std::vector<std::pair<int, int>> to;
   for (int i = 0; i < plan.owned; ++i)
-    for (int r = 0; r < size; ++r)
-      if (r != rank && tree.distance(p.x[i], r) < width) to.emplace_back(r, i);
+    for (const int r : near)
+      if (tree.distance(p.x[i], r) < width) to.emplace_back(r, i);
   plan.send_index = grouped(to, size, plan.send_counts);
   const std::vector<char> recv =
       records::alltoallv(comm, records::pack(p, plan.send_index), plan.send_counts,

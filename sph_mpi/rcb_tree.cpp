@@ -126,6 +126,23 @@ double RcbTree<Dim>::distance(const Vec<Dim>& x, int rank) const {
   return std::sqrt(d2);
 }
 
+template <int Dim>
+double RcbTree<Dim>::box_distance(int a, int b) const {
+  double d2 = 0.0;
+  for (int k = 0; k < Dim; ++k) {
+    auto gap = [&](double shift) {
+      return std::max({lo_[b][k] + shift - hi_[a][k], lo_[a][k] - hi_[b][k] - shift, 0.0});
+    };
+    double g = gap(0.0);
+    if (domain_.periodic[k]) {
+      const double L = domain_.hi[k] - domain_.lo[k];
+      g = std::min({g, gap(-L), gap(L)});
+    }
+    d2 += g * g;
+  }
+  return std::sqrt(d2);
+}
+
 template class RcbTree<2>;
 template class RcbTree<3>;
 

@@ -26,6 +26,8 @@ class RcbTree {
   const Vec<Dim>& hi(int rank) const { return hi_[rank]; }
   // Shortest distance from x to the rank's box, across periodic boundaries too (0 inside).
   double distance(const Vec<Dim>& x, int rank) const;
+  // Shortest distance between two ranks' boxes, across periodic boundaries too (0 touching).
+  double box_distance(int a, int b) const;
 
  private:
   struct Node {
