@@ -195,12 +195,10 @@ std::string IsphSolver<Dim>::describe_fastest() const {
   if (decomposition_) {
     // Each process knows its own fastest: the fastest of all is named (collective).
     const double mine = fast < 0 ? -1.0 : P.v[fast].norm();
-    const double best = share_->max(mine);
-    std::vector<char> text;
-    if (fast >= 0 && mine == best)
-      text.assign(fastest.c_str(), fastest.c_str() + fastest.size() + 1);
-    const std::vector<char> all = share_->concatenate(text);
-    return all.empty() ? fastest : std::string(all.data());
+    const double best = share_->max(mine);  // on every process, before the test below
+    const std::string named =
+        share_->first_text(fast >= 0 && mine == best ? fastest : std::string());
+    return named.empty() ? fastest : named;
   }
   if (fast < 0) return fastest;
   if (fast < first_ || fast >= last_) return fastest;  // its neighbours were listed elsewhere
@@ -234,15 +232,8 @@ void IsphSolver<Dim>::check_state(const char* where) const {
   // Decomposed, the particle is on one process only: every process stops with its message (the
   // lowest such process's), so that none waits for the others in the next step.
   if (decomposition_) {
-    std::vector<char> mine;
-    if (!failure.empty()) {
-      const std::string record = cause + '\n' + failure;
-      mine.assign(record.begin(), record.end());
-      mine.push_back('\0');
-    }
-    const std::vector<char> all = share_->concatenate(mine);
-    if (all.empty()) return;
-    const std::string first(all.data());
+    const std::string first = share_->first_text(failure.empty() ? "" : cause + '\n' + failure);
+    if (first.empty()) return;
     cause = first.substr(0, first.find('\n'));
     failure = first.substr(first.find('\n') + 1);
   }

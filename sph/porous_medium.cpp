@@ -3,7 +3,6 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 namespace isph {
 
@@ -25,13 +24,8 @@ void PorousMedium<Dim>::prepare(const Particles<Dim>& P, const Neighbors<Dim>& n
               "unresolved.min_porosity and the drag law)";
     if (eps != 1.0 || K != 0.0) active_ = true;
   }
-  if (share && share->decomposed()) {
-    // The particle is on some processes only: all stop, with the first one's message.
-    std::vector<char> mine;
-    if (!error.empty()) mine.assign(error.c_str(), error.c_str() + error.size() + 1);
-    const std::vector<char> all = share->concatenate(mine);
-    if (!all.empty()) error = all.data();
-  }
+  // Decomposed, the particle is on some processes only: all stop, with the first one's message.
+  if (share && share->decomposed()) error = share->first_text(error);
   if (!error.empty()) throw std::invalid_argument(error);
   // Decomposed, another process's particles may be porous: all take the same branch below.
   if (share && share->decomposed()) active_ = share->max(active_ ? 1.0 : 0.0) > 0.0;

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <string>
 #include <vector>
 
 namespace isph {
@@ -38,6 +39,15 @@ class RowShare {
   // Element-wise sum over the processes, in place.
   virtual void sum_in_place(double* /*data*/, std::size_t /*count*/) const {}
   virtual double max(double x) const { return x; }
+
+  // The first non-empty text of all processes, in the order of the parts ("" when none has one):
+  // what a stop found on some processes only, so that every process stops with the same message.
+  std::string first_text(const std::string& mine) const {
+    std::vector<char> bytes;
+    if (!mine.empty()) bytes.assign(mine.c_str(), mine.c_str() + mine.size() + 1);
+    const std::vector<char> all = concatenate_bytes(bytes);
+    return all.empty() ? std::string() : std::string(all.data());
+  }
 
   template <class T>
   void exchange(std::vector<T>& rows) const {
