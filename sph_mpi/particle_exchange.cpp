@@ -66,20 +66,8 @@ void refresh_halo_rows(MPI_Comm comm, const HaloPlan& plan, void* rows, std::siz
     std::memcpy(send.data() + k * row_bytes, data + plan.send_index[k] * row_bytes, row_bytes);
   // The counts are the plan's: one MPI_Alltoallv per refresh, no exchange of counts first (the
   // stages refresh some 13 arrays per step).
-  const int size = static_cast<int>(plan.send_counts.size());
-  std::vector<int> sc(size), sd(size), rc(size), rd(size);
-  int s_at = 0, r_at = 0;
-  for (int r = 0; r < size; ++r) {
-    sc[r] = plan.send_counts[r] * static_cast<int>(row_bytes);
-    rc[r] = plan.recv_counts[r] * static_cast<int>(row_bytes);
-    sd[r] = s_at;
-    rd[r] = r_at;
-    s_at += sc[r];
-    r_at += rc[r];
-  }
-  MPI_Alltoallv(send.data(), sc.data(), sd.data(), MPI_BYTE,
-                data + static_cast<std::size_t>(plan.owned) * row_bytes, rc.data(), rd.data(),
-                MPI_BYTE, comm);
+  records::alltoallv_into(comm, send.data(), plan.send_counts, plan.recv_counts, row_bytes,
+                          data + static_cast<std::size_t>(plan.owned) * row_bytes);
 }
 
 template void migrate<2>(MPI_Comm, const RcbTree<2>&, Particles<2>&);

@@ -51,14 +51,12 @@ void unpack(const std::vector<char>& buf, Particles<Dim>& p, std::size_t start) 
   });
 }
 
-// Items of `item_bytes` each, send_counts[r] of them to rank r (in rank order in `send`); returns
-// what arrives, in rank order, and sets recv_counts.
-inline std::vector<char> alltoallv(MPI_Comm comm, const std::vector<char>& send,
-                                   const std::vector<int>& send_counts, std::size_t item_bytes,
-                                   std::vector<int>& recv_counts) {
+// Items of `item_bytes` each, send_counts[r] of them to rank r (in rank order in `send`), with
+// the counts each rank receives already known: what arrives is written to `recv`, in rank order.
+inline void alltoallv_into(MPI_Comm comm, const char* send, const std::vector<int>& send_counts,
+                           const std::vector<int>& recv_counts, std::size_t item_bytes,
+                           char* recv) {
   const int size = static_cast<int>(send_counts.size());
-  recv_counts.assign(size, 0);
-  MPI_Alltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT, comm);
   std::vector<int> sc(size), sd(size), rc(size), rd(size);
   int s_at = 0, r_at = 0;
   for (int r = 0; r < size; ++r) {
@@ -69,9 +67,20 @@ inline std::vector<char> alltoallv(MPI_Comm comm, const std::vector<char>& send,
     s_at += sc[r];
     r_at += rc[r];
   }
-  std::vector<char> recv(r_at);
-  MPI_Alltoallv(send.data(), sc.data(), sd.data(), MPI_BYTE, recv.data(), rc.data(), rd.data(),
-                MPI_BYTE, comm);
+  MPI_Alltoallv(send, sc.data(), sd.data(), MPI_BYTE, recv, rc.data(), rd.data(), MPI_BYTE, comm);
+}
+
+// As above, the receive counts exchanged first: returns what arrives and sets recv_counts.
+inline std::vector<char> alltoallv(MPI_Comm comm, const std::vector<char>& send,
+                                   const std::vector<int>& send_counts, std::size_t item_bytes,
+                                   std::vector<int>& recv_counts) {
+  const int size = static_cast<int>(send_counts.size());
+  recv_counts.assign(size, 0);
+  MPI_Alltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT, comm);
+  std::size_t items = 0;
+  for (int c : recv_counts) items += static_cast<std::size_t>(c);
+  std::vector<char> recv(items * item_bytes);
+  alltoallv_into(comm, send.data(), send_counts, recv_counts, item_bytes, recv.data());
   return recv;
 }
 

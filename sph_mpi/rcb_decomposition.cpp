@@ -28,8 +28,12 @@ int64_t RcbDecomposition<Dim>::migrate(Particles<Dim>& p, std::vector<double>* c
     tree_ = RcbTree<Dim>::build(comm_, domain_, p.x);
     ++cuts_;
   }
+  std::vector<int> owner(p.size());
   int64_t leaving = 0;
-  for (const auto& x : p.x) leaving += tree_->owner(x) != part_;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    owner[i] = tree_->owner(p.x[i]);
+    leaving += owner[i] != part_;
+  }
   MPI_Allreduce(MPI_IN_PLACE, &leaving, 1, MPI_INT64_T, MPI_SUM, comm_);
   if (leaving == 0) return 0;
   if (!carried) {
@@ -43,8 +47,7 @@ int64_t RcbDecomposition<Dim>::migrate(Particles<Dim>& p, std::vector<double>* c
     double value;
   };
   std::vector<std::vector<Item>> to(parts_);
-  for (std::size_t i = 0; i < p.size(); ++i)
-    to[tree_->owner(p.x[i])].push_back({p.id[i], (*carried)[i]});
+  for (std::size_t i = 0; i < p.size(); ++i) to[owner[i]].push_back({p.id[i], (*carried)[i]});
   std::vector<char> send;
   std::vector<int> items(parts_);
   for (int r = 0; r < parts_; ++r) {
