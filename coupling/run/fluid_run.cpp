@@ -73,9 +73,8 @@ double FluidRun<Dim>::kinetic_energy() const {
   for (std::size_t i = 0; i < P.size(); ++i)
     if (P.kind[i] != isph::kWall)
       ke += 0.5 * solver_.config().density * P.volume * P.v[i].squaredNorm();
-  if (solver_.decomposed())
-    MPI_Allreduce(MPI_IN_PLACE, &ke, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
-  return ke;
+  const isph::RowShare* ranks = solver_.decomposition();
+  return ranks ? ranks->sum(ke) : ke;
 }
 
 template <int Dim>

@@ -21,7 +21,7 @@ class RunReport {
   void check_columns(const std::vector<std::string>& columns) const;
   void cost(double time, long steps, long particles, double wall_seconds, long ppe_iterations);
   // The ranks the run's fluid was on, and whether its rows were shared between them.
-  void parallel(int ranks, bool rows_shared, bool decomposed = false);
+  void parallel(int ranks, bool rows_shared, bool decomposed);
   void stopped(const std::string& why, const std::string& cause);
   void error(const std::string& why);
 
