@@ -4,6 +4,8 @@
 // DemBackend and the IsphSolver and calls, per fluid step of length dt:
 //
 //   state = backend.state()
+//   for each stage: stage.move_particles(state, solver)         // PMS solids to their poses
+//   solver.redistribute()                                       // decomposed: to their owners
 //   for each stage: stage.before_fluid_step(state, solver)      // DEM -> fluid (consistent)
 //   solver.step(dt)
 //   loads = {}; for each stage: stage.after_fluid_step(state, solver, dt, loads)  // fluid -> DEM
@@ -50,6 +52,10 @@ class CouplingStage {
   virtual ~CouplingStage() = default;
   virtual std::string name() const = 0;
   virtual void initialize(const DemState& dem, isph::IsphSolver<Dim>& solver) = 0;
+  // Moves the fluid particles the stage places itself (none by default), before the fluid is
+  // redistributed over the ranks: decomposed, a particle must lie in its owner's region when the
+  // step adds its halo.
+  virtual void move_particles(const DemState& /*dem*/, isph::IsphSolver<Dim>& /*solver*/) {}
   virtual void before_fluid_step(const DemState& dem, isph::IsphSolver<Dim>& solver) = 0;
   virtual void after_fluid_step(const DemState& dem, const isph::IsphSolver<Dim>& solver, double dt,
                                 DemLoads& loads) = 0;

@@ -39,10 +39,6 @@ IsphSolver<Dim>::IsphSolver(const IsphConfig<Dim>& config, const Domain<Dim>& do
 
 template <int Dim>
 void IsphSolver<Dim>::decompose(std::shared_ptr<Decomposition<Dim>> d) {
-  if (particles_.count(kSolid) > 0)
-    throw SimulationError(
-        "the fluid cannot yet be decomposed over MPI ranks with PMS solids ([resolved] bodies): "
-        "run this case without parallel.decompose");
   try {
     linear_solver_->number_globally(nullptr);
     unit_solver_->number_globally(nullptr);
@@ -53,6 +49,7 @@ void IsphSolver<Dim>::decompose(std::shared_ptr<Decomposition<Dim>> d) {
   std::vector<int> mine;
   for (int i = d->part(); i < static_cast<int>(particles_.size()); i += d->parts())
     mine.push_back(i);
+  solids_ = particles_.count(kSolid) > 0;
   particles_.permute(mine);
   particles_.for_each_array([&](auto& a) { a.resize(mine.size()); });
   d->migrate(particles_, nullptr);
@@ -142,8 +139,8 @@ StepStats IsphSolver<Dim>::step(double dt) {
   {
     Stopwatch w(timings_.rest);
     correct(dt);
-    if (follow_enclosing_solids(particles_, nb_, config_.pocket_solid_fraction, config_.density, dt,
-                                block_share()) > 0)
+    if (has_solids() && follow_enclosing_solids(particles_, nb_, config_.pocket_solid_fraction,
+                                                config_.density, dt, block_share()) > 0)
       exchange(particles_.v);  // the blended rows (the count is over all processes)
     shift(dt);
     advect(dt, stats);

@@ -159,7 +159,9 @@ class IsphSolver {
   // Decomposes the fluid over the processes of `d` (sph/decomposition.hpp): from now on this
   // process steps only the particles it owns, and particles() holds them alone between steps.
   // Every process must have been given every particle; collective. Needs the distributed
-  // pressure solver (solver.preconditioner = "amg") and a case without PMS solids.
+  // pressure solver (solver.preconditioner = "amg"). PMS solids travel between the processes
+  // as fluid particles do; their bodies' loads are then each process's share (rigid_solid_loads
+  // over its own particles, summed over decomposition()).
   void decompose(std::shared_ptr<Decomposition<Dim>> d);
   bool decomposed() const { return decomposition_ != nullptr; }
   // Decomposed: sends the particles that left this process's region to their owners. step()
@@ -218,6 +220,8 @@ class IsphSolver {
   const RowShare* block_share() const { return blocked_ ? share_.get() : nullptr; }
   // Passes over all rows that must reduce over the processes instead (decomposed fluid).
   const RowShare* decomposed_share() const { return decomposition_ ? share_.get() : nullptr; }
+  // Whether the scene has PMS solids, on every process alike.
+  bool has_solids() const { return decomposition_ ? solids_ : particles_.count(kSolid) > 0; }
 
   IsphConfig<Dim> config_;
   Domain<Dim> domain_;
@@ -229,6 +233,9 @@ class IsphSolver {
   std::shared_ptr<const RowShare> share_ = std::make_shared<RowShare>();
   std::shared_ptr<Decomposition<Dim>> decomposition_;  // set: the same object as share_
   bool redistributed_ = false;                         // since the last step
+  // Decomposed: whether any process holds PMS solids (decided before the split, so that every
+  // process takes the solids' collective passes).
+  bool solids_ = false;
   // Decomposed: whether q is valid, the same on every process (a process owning no particle
   // holds an empty q all the same).
   bool have_q_ = false;

@@ -1,6 +1,7 @@
 #include "pocket_fluid.hpp"
 
 #include <algorithm>
+#include <unordered_map>
 
 namespace isph {
 
@@ -40,12 +41,16 @@ template <int Dim>
 int follow_enclosing_solids(Particles<Dim>& P, const Neighbors<Dim>& nb, double onset, double rho0,
                             double dt, const RowShare* share) {
   // Fluid-only and unresolved runs have no PMS particles: no sweep over the neighbours.
-  if (!(onset < 1.0) || P.count(kSolid) == 0) return 0;
+  // Decomposed, a process without solids still takes part (the caller calls this only where
+  // some process holds solids).
+  const bool decomposed = share && share->decomposed();
+  if (!(onset < 1.0) || (!decomposed && P.count(kSolid) == 0)) return 0;
   const int n = static_cast<int>(P.size());
   const int first = share ? share->first(n) : 0, last = share ? share->last(n) : n;
   int blended = 0;
   struct Reaction {
-    int j;
+    int j;       // shared rows: the row, the same on every process
+    int64_t id;  // decomposed: the solid's id, as its row may be another process's halo copy
     Vec<Dim> force;
   };
   std::vector<Reaction> reactions;  // with shared rows: applied below, in row order
@@ -65,14 +70,25 @@ int follow_enclosing_solids(Particles<Dim>& P, const Neighbors<Dim>& nb, double 
       const int j = nb.index[k];
       if (P.kind[j] != kSolid) continue;
       if (share)
-        reactions.push_back({j, nb.w[k] / sup.solid * reaction});
+        reactions.push_back({j, P.id[j], nb.w[k] / sup.solid * reaction});
       else
         P.solid_force[j] += nb.w[k] / sup.solid * reaction;
     }
     ++blended;
   }
   if (share) {
-    for (const auto& r : share->concatenate(reactions)) P.solid_force[r.j] += r.force;
+    const std::vector<Reaction> all = share->concatenate(reactions);
+    if (decomposed) {  // each solid's owner takes its reactions
+      std::unordered_map<int64_t, int> owned;
+      if (!all.empty())
+        for (int i = first; i < last; ++i)
+          if (P.kind[i] == kSolid) owned.emplace(P.id[i], i);
+      for (const auto& r : all)
+        if (const auto it = owned.find(r.id); it != owned.end())
+          P.solid_force[it->second] += r.force;
+    } else {
+      for (const auto& r : all) P.solid_force[r.j] += r.force;
+    }
     blended = static_cast<int>(share->sum(blended));
   }
   return blended;

@@ -34,7 +34,8 @@ double solid_share(const Particles<Dim>& particles, const Neighbors<Dim>& nb, in
 // 2D, for a step dt with fluid density rho0). Returns the number of particles blended. onset >= 1
 // turns it off. With shared rows (sph/row_share.hpp, nb for this process's rows only) the blend
 // acts on this process's rows, and the reactions of all processes are added to every row's
-// solid_force in the one-process order (velocities: exchange them after).
+// solid_force in the one-process order (velocities: exchange them after); decomposed
+// (sph/decomposition.hpp), to the owned solids' solid_force, wherever the fluid particle is.
 template <int Dim>
 int follow_enclosing_solids(Particles<Dim>& particles, const Neighbors<Dim>& nb, double onset,
                             double rho0, double dt, const RowShare* share = nullptr);

@@ -182,7 +182,10 @@ void mark_dry_solids(Particles<Dim>& particles, const Neighbors<Dim>& nb, const 
   int nbodies = 0;
   for (int i = 0; i < n; ++i)
     if (P.kind[i] == kSolid) nbodies = std::max(nbodies, P.body[i] + 1);
-  if (nbodies == 0) return;
+  // Decomposed, a process may hold no solid while others do: it still takes part in the
+  // exchanges below (the caller calls this only where some process holds solids).
+  const bool decomposed = share && share->decomposed();
+  if (nbodies == 0 && !decomposed) return;
   const Vec<Dim> up = -gravity.normalized();
   // Fluid within one support of a body, then free-surface fluid within one support of those.
   std::vector<int> near(n, -1);
@@ -192,16 +195,22 @@ void mark_dry_solids(Particles<Dim>& particles, const Neighbors<Dim>& nb, const 
       if (P.kind[nb.index[k]] == kSolid) near[i] = P.body[nb.index[k]];
   }
   if (share) share->exchange(near);
-  std::vector<std::pair<int, int>> points;  // (body, particle) in row order
+  // Positions rather than rows: decomposed, a point's row exists on its own process only.
+  struct Point {
+    int body;
+    Vec<Dim> x;
+  };
+  std::vector<Point> points;  // in row order
   for (int i = first; i < last; ++i) {
     if (!P.surface[i] || P.kind[i] == kSolid || P.kind[i] == kWall) continue;
     int b = near[i];
     for (int k = nb.begin(i); k < nb.end(i) && b < 0; ++k) b = near[nb.index[k]];
-    if (b >= 0) points.emplace_back(b, i);
+    if (b >= 0) points.push_back({b, P.x[i]});
   }
   if (share) points = share->concatenate(points);
+  for (const auto& q : points) nbodies = std::max(nbodies, q.body + 1);
   std::vector<std::vector<Vec<Dim>>> line(nbodies);
-  for (const auto& [b, i] : points) line[b].push_back(P.x[i]);
+  for (const auto& q : points) line[q.body].push_back(q.x);
   // Height of the waterline of body b below/above x: h = a + c s (s horizontal, 2D) or h = a.
   std::vector<double> a(nbodies, 0.0), c(nbodies, 0.0);
   std::vector<Vec<Dim>> origin(nbodies, Vec<Dim>::Zero());

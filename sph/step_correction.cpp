@@ -32,7 +32,9 @@ void IsphSolver<Dim>::correct(double dt) {
     P.v[i] = u_star_[i] - dt * porous_.pressure_coefficient(i) / rho0 * gradient(nb_, op_, P.p, i);
   }
   exchange(P.v);
-  if (P.count(kSolid) > 0) exchange(P.solid_force);  // the pocket blend adds to every row's
+  // With shared rows the pocket blend adds to every row's; decomposed, to the owned rows' only,
+  // and the loads are summed over those.
+  if (!decomposition_ && has_solids()) exchange(P.solid_force);
 }
 
 template <int Dim>

@@ -30,7 +30,8 @@ void IsphSolver<Dim>::detect_free_surface() {
     }
   } else
     std::fill(particles_.surface.begin(), particles_.surface.end(), 0);
-  if (config_.free_surface) mark_dry_solids(particles_, nb_, config_.gravity, block_share());
+  if (config_.free_surface && has_solids())
+    mark_dry_solids(particles_, nb_, config_.gravity, block_share());
   exchange(particles_.surface);
   surface_depth_.clear();
   if (config_.free_surface && config_.surface_refill && config_.gravity.squaredNorm() > 0.0)

@@ -6,8 +6,10 @@ namespace isphdem {
 
 template <int Dim>
 std::unique_ptr<ResolvedCoupling<Dim>> make_resolved_coupling(const CaseFile& c,
-                                                              const FluidScene<Dim>& scene) {
+                                                              const FluidScene<Dim>& scene,
+                                                              bool report) {
   ResolvedSettings s;
+  s.report = report;
   s.spacing = scene.particles.spacing;
   s.fluid_density = scene.config.density;
   if (Dim == 2) s.slab_thickness = slab_thickness(c);
@@ -26,8 +28,8 @@ std::unique_ptr<ResolvedCoupling<Dim>> make_resolved_coupling(const CaseFile& c,
 }
 
 template std::unique_ptr<ResolvedCoupling<2>> make_resolved_coupling<2>(const CaseFile&,
-                                                                        const FluidScene<2>&);
+                                                                        const FluidScene<2>&, bool);
 template std::unique_ptr<ResolvedCoupling<3>> make_resolved_coupling<3>(const CaseFile&,
-                                                                        const FluidScene<3>&);
+                                                                        const FluidScene<3>&, bool);
 
 }  // namespace isphdem

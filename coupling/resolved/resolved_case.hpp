@@ -11,10 +11,11 @@
 
 namespace isphdem {
 
-// Throws CaseError naming the key and the fix.
+// Throws CaseError naming the key and the fix. report: ResolvedSettings::report.
 template <int Dim>
 std::unique_ptr<ResolvedCoupling<Dim>> make_resolved_coupling(const CaseFile& c,
-                                                              const FluidScene<Dim>& scene);
+                                                              const FluidScene<Dim>& scene,
+                                                              bool report = true);
 
 }  // namespace isphdem
 

@@ -149,7 +149,7 @@ void ResolvedCoupling<Dim>::initialize(const DemState& dem, isph::IsphSolver<Dim
   }
   const std::size_t shared =
       remove_shared_pms_nodes<Dim>(positions, bodies, members_of, domain, dx);
-  if (shared > 0)
+  if (shared > 0 && settings_.report)
     std::printf(
         "resolved coupling: %zu PMS particles dropped where touching bodies took the same "
         "lattice node\n",
@@ -224,20 +224,20 @@ void ResolvedCoupling<Dim>::initialize(const DemState& dem, isph::IsphSolver<Dim
       info.scale *= body.volume / info.fluid_volume;
     }
     info_.push_back(info);
-    if (body.id >= 0)  // one line per clump; fines may be thousands
+    if (body.id >= 0 && settings_.report)  // one line per clump; fines may be thousands
       std::printf(
           "resolved coupling: body %d: %zu PMS particles, solid volume seen by the fluid %.6g "
           "m^3 = %.4f x the DEM volume\n",
           body.id, x.size(), info.fluid_volume,
           body.volume > 0.0 ? info.fluid_volume / body.volume : 0.0);
   }
-  if (bodies.size() > dem.bodies.size())
+  if (bodies.size() > dem.bodies.size() && settings_.report)
     std::printf("resolved coupling: %zu free spheres resolved, %zu PMS particles in all\n",
                 bodies.size() - dem.bodies.size(), P.count(isph::kSolid));
 }
 
 template <int Dim>
-void ResolvedCoupling<Dim>::before_fluid_step(const DemState& dem, isph::IsphSolver<Dim>& solver) {
+void ResolvedCoupling<Dim>::move_particles(const DemState& dem, isph::IsphSolver<Dim>& solver) {
   std::vector<isph::RigidPose<Dim>> poses(info_.size());
   std::vector<uint8_t> seen(info_.size(), 0);
   for (const DemBody& body : resolved_bodies(dem)) {
@@ -266,7 +266,22 @@ void ResolvedCoupling<Dim>::after_fluid_step(const DemState& dem,
     const int b = index_of(body.id);
     centres[b] = in_plane<Dim>(body.x) + pose(body).rotation * centroid_offset_[b];
   }
-  const auto sums = isph::rigid_solid_loads(solver.particles(), solver.domain(), centres);
+  auto sums = isph::rigid_solid_loads(solver.particles(), solver.domain(), centres);
+  if (const isph::RowShare* ranks = solver.decomposition()) {
+    // Each process summed its own particles: every body takes the shares of all processes (the
+    // same sums on every process, in the bodies' common order).
+    std::vector<double> all;
+    for (const auto& l : sums) {
+      all.insert(all.end(), l.force.data(), l.force.data() + Dim);
+      all.insert(all.end(), l.torque.data(), l.torque.data() + l.torque.size());
+    }
+    if (!all.empty()) ranks->sum_in_place(all.data(), all.size());
+    std::size_t at = 0;
+    for (auto& l : sums) {
+      for (int k = 0; k < Dim; ++k) l.force[k] = all[at++];
+      for (Eigen::Index k = 0; k < l.torque.size(); ++k) l.torque[k] = all[at++];
+    }
+  }
   for (std::size_t b = 0; b < info_.size(); ++b) {
     const double scale = info_[b].scale;
     Vec3 f{0.0, 0.0, 0.0}, t{0.0, 0.0, 0.0};

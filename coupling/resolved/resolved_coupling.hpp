@@ -3,9 +3,10 @@
 // initialize: per DEM body, PMS particles (coupling/pms_generation.hpp) are added to the fluid
 //   as kind kSolid; fluid particles closer than `overlap` spacings to one of them are removed
 //   (on the fluid lattice these are exactly the nodes the solids take).
-// before_fluid_step: every PMS particle is put at its body's pose with v = v_cm + omega x r.
+// move_particles: every PMS particle is put at its body's pose with v = v_cm + omega x r.
 // after_fluid_step: per body, the sum of the particles' fluid forces and their moments about the
-//   centre of mass (sph/rigid_solids.hpp) go to DemLoads.body_* (for a resolved free sphere to
+//   centre of mass (sph/rigid_solids.hpp; decomposed, each rank's own particles', summed over the
+//   ranks) go to DemLoads.body_* (for a resolved free sphere to
 //   DemLoads.atom_*, by its tag); in 2D the per-unit-depth loads
 //   are multiplied by the slab thickness T. Nothing else is scaled, so what the fluid gives is
 //   what the bodies receive.
@@ -41,6 +42,8 @@ struct ResolvedSettings {
   // (force and torque by tag); off, only multisphere clumps are resolved. (coupling.model =
   // "resolved" turns it on.)
   bool free_spheres = false;
+  // One line per clump (and the count of free spheres) at initialize(); under mpirun, rank 0's.
+  bool report = true;
 };
 
 template <int Dim>
@@ -50,7 +53,8 @@ class ResolvedCoupling : public CouplingStage<Dim> {
 
   std::string name() const override { return "resolved (PMS)"; }
   void initialize(const DemState& dem, isph::IsphSolver<Dim>& solver) override;
-  void before_fluid_step(const DemState& dem, isph::IsphSolver<Dim>& solver) override;
+  void move_particles(const DemState& dem, isph::IsphSolver<Dim>& solver) override;
+  void before_fluid_step(const DemState&, isph::IsphSolver<Dim>&) override {}
   void after_fluid_step(const DemState& dem, const isph::IsphSolver<Dim>& solver, double dt,
                         DemLoads& loads) override;
 

@@ -56,6 +56,7 @@ isph::StepStats CoupledRun<Dim>::advance() {
     Stopwatch w(timings_.coupling);
     const DemState& state = backend_.state();
     atoms_before_ = state.atoms;
+    for (auto& s : stages_) s->move_particles(state, solver);
     solver.redistribute();  // decomposed: the stages map the particles the step will step
     for (auto& s : stages_) s->before_fluid_step(state, solver);
   }

@@ -38,7 +38,7 @@ class CoupledRun {
 
   double dt() const { return dt_; }
   int substeps() const { return substeps_; }
-  // FluidRun::decompose: each rank keeps its own part of the fluid (not with PMS bodies).
+  // FluidRun::decompose: each rank keeps its own part of the fluid, PMS bodies' particles too.
   bool decompose() { return fluid_.decompose(); }
   isph::IsphSolver<Dim>& solver() { return fluid_.solver(); }
   const isph::IsphSolver<Dim>& solver() const { return fluid_.solver(); }

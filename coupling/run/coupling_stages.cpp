@@ -10,7 +10,7 @@ namespace isphdem {
 template <int Dim>
 std::vector<std::unique_ptr<CouplingStage<Dim>>> make_coupling_stages(const CaseFile& c,
                                                                       const FluidScene<Dim>& scene,
-                                                                      double dt) {
+                                                                      double dt, bool report) {
   std::vector<std::unique_ptr<CouplingStage<Dim>>> stages;
   const double h = scene.config.smoothing_ratio * scene.particles.spacing;
   const std::string model = coupling_model(c);
@@ -18,7 +18,7 @@ std::vector<std::unique_ptr<CouplingStage<Dim>>> make_coupling_stages(const Case
     throw CaseError("coupling.model = \"auto\" must be resolved from the grains before the stages");
   if (model != "resolved")
     stages.push_back(make_unresolved_coupling<Dim>(c, h, scene.config.viscosity));
-  if (model != "unresolved") stages.push_back(make_resolved_coupling<Dim>(c, scene));
+  if (model != "unresolved") stages.push_back(make_resolved_coupling<Dim>(c, scene, report));
   if (c.string("inflow.mode", "zone") == "mean_flow") {
     isph::Vec<Dim> dir = -scene.config.gravity;
     if (c.has("inflow.direction")) {
@@ -36,8 +36,8 @@ std::vector<std::unique_ptr<CouplingStage<Dim>>> make_coupling_stages(const Case
 }
 
 template std::vector<std::unique_ptr<CouplingStage<2>>> make_coupling_stages<2>(
-    const CaseFile&, const FluidScene<2>&, double);
+    const CaseFile&, const FluidScene<2>&, double, bool);
 template std::vector<std::unique_ptr<CouplingStage<3>>> make_coupling_stages<3>(
-    const CaseFile&, const FluidScene<3>&, double);
+    const CaseFile&, const FluidScene<3>&, double, bool);
 
 }  // namespace isphdem

@@ -13,11 +13,13 @@ namespace isphdem {
 
 // By coupling.model: the unresolved coupling (not for "resolved"), the resolved PMS stage
 // ("semi-resolved", "resolved"), then, with [inflow] mode = "mean_flow", the MeanFlowDrive
-// (unresolved/mean_flow_drive.hpp). Throws CaseError naming the key and the fix.
+// (unresolved/mean_flow_drive.hpp). Throws CaseError naming the key and the fix. report: whether
+// the stages print what they set up (rank 0 of a run under mpirun).
 template <int Dim>
 std::vector<std::unique_ptr<CouplingStage<Dim>>> make_coupling_stages(const CaseFile& c,
                                                                       const FluidScene<Dim>& scene,
-                                                                      double dt);
+                                                                      double dt,
+                                                                      bool report = true);
 
 }  // namespace isphdem
 

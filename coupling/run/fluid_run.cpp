@@ -50,9 +50,7 @@ bool FluidRun<Dim>::decompose() {
   MPI_Initialized(&mpi);
   if (mpi) MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   const bool distributed = solver_.config().pressure_solver.preconditioner == "amg";
-  // PMS solids are not decomposed yet (IsphSolver::decompose says so when asked explicitly).
-  const bool solids = solver_.particles().count(isph::kSolid) > 0;
-  if (ranks == 1 || !settings_.decompose.value_or(distributed && !solids)) return false;
+  if (ranks == 1 || !settings_.decompose.value_or(distributed)) return false;
   if (!distributed)
     throw CaseError(
         "parallel.decompose = true needs the pressure solved over the ranks: set "

@@ -21,8 +21,9 @@ class FluidRun {
   void run_until(double t, const std::function<void(const isph::StepStats&)>& after_step = {});
 
   // Under mpirun, where settings.decompose asks for it (unset: where the pressure solve is
-  // distributed, solver.preconditioner = "amg", and no PMS solids are in the fluid; a coupled run
-  // calls it after its stages placed them): from now on each rank holds and steps only its
+  // distributed, solver.preconditioner = "amg"; a coupled run calls it after its stages added
+  // their PMS solids, which are decomposed with the fluid): from now on each rank holds and
+  // steps only its
   // part of the fluid (docs/parallel.md). Call before the first step, with the same fluid on
   // every rank (check_replicas); collective. Returns whether the fluid is decomposed.
   bool decompose();

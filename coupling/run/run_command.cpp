@@ -213,9 +213,9 @@ DemCaseConfig dem_config(const CaseFile& c) {
 }
 
 // A case with [fluid] and [dem]: fine grains (free spheres) coupled unresolved, clumps resolved.
-// The DEM state is gathered to every rank; the fluid is decomposed over the ranks as in a
-// fluid-only case unless PMS bodies keep it on every rank (shared rows). The ranks write each
-// snapshot together, the grains from rank 0.
+// The DEM state is gathered to every rank; the fluid (PMS bodies' particles included) is
+// decomposed over the ranks as in a fluid-only case. The ranks write each snapshot together, the
+// grains from rank 0.
 template <int Dim>
 int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report) {
   int rank = 0;
@@ -239,7 +239,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   const bool choose = coupling_model(given) == "auto";
   const AutoThresholds thresholds = choose ? auto_thresholds(given) : AutoThresholds{};
   std::vector<std::unique_ptr<CouplingStage<Dim>>> stages;
-  if (!choose) stages = make_coupling_stages<Dim>(given, scene, dt);
+  if (!choose) stages = make_coupling_stages<Dim>(given, scene, dt, rank == 0);
   Vec3 up{0.0, 0.0, 0.0};
   {
     isph::Vec<Dim> g = scene.config.gravity;
@@ -290,7 +290,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     for (const auto& g : a.classes) auto_lines.push_back("  " + describe(g, dx));
     return given.with_override("coupling.model=\"" + a.model + "\"");
   }();
-  if (choose) stages = make_coupling_stages<Dim>(c, scene, dt);
+  if (choose) stages = make_coupling_stages<Dim>(c, scene, dt, rank == 0);
   const GrainModels models = grain_models(coupling_model(c));
   CoupledRun<Dim> run(std::move(scene), settings, backend, dem.substeps, std::move(stages));
   auto& solver = run.solver();
@@ -311,7 +311,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   }
   check_replicas(P, solver.steps());  // the ranks start from the same fluid
   const long particles = long(P.size());
-  const bool decomposed = run.decompose();  // unresolved only: PMS bodies keep shared rows
+  const bool decomposed = run.decompose();
   // Grain density for the mass of ejected fines: that of the clumps when there are any (the
   // DEM state has no per-atom mass).
   double grain_density = std::nan("");

@@ -37,31 +37,38 @@ inline std::filesystem::path last_snapshot(const std::filesystem::path& dir) {
   return snaps.empty() ? std::filesystem::path() : snaps.back();
 }
 
-// The example NAME run with ARGS on one rank and on ranks(), into scratch(SCRATCH)/np1 and /npN,
-// with the pressure solved over the ranks (amg) to 1e-10; returns the two runs' last snapshots.
-// A run that fails is a test failure (callers stop on ::testing::Test::HasFailure()), and so is
-// a run on several ranks whose fluid rows were not shared between them (result.json): it would
-// test the replicated stepping only. A fluid-only run is decomposed unless ARGS say
-// parallel.decompose=false (docs/parallel.md); `coupled` runs never are.
-inline std::pair<std::filesystem::path, std::filesystem::path> run_on_one_and_many(
-    const std::string& scratch_name, const std::string& name, const std::string& args,
-    bool coupled = false) {
+// The case ONE_CASE run with ARGS on one rank and MANY_CASE (the same case, where the DEM script
+// needs a processor grid of its own) on ranks(), into scratch(SCRATCH)/np1 and /npN, with the
+// pressure solved over the ranks (amg) to 1e-10; returns the two runs' last snapshots. A run that
+// fails is a test failure (callers stop on ::testing::Test::HasFailure()), and so is a run on
+// several ranks whose fluid rows were not shared between them (result.json): it would test the
+// replicated stepping only. The fluid is decomposed unless ARGS say parallel.decompose=false
+// (docs/parallel.md).
+inline std::pair<std::filesystem::path, std::filesystem::path> run_cases_on_one_and_many(
+    const std::string& scratch_name, const std::string& one_case, const std::string& many_case,
+    const std::string& args) {
   const auto dir = scratch(scratch_name);
   const std::string tight =
       " --quiet --set solver.preconditioner=amg --set solver.pressure_tolerance=1e-10 ";
   for (const auto& [np, sub] : {std::pair{1, "np1"}, std::pair{ranks(), "npN"}}) {
-    const Result r =
-        mpirun_run(np, example(name) + " --out " + (dir / sub).string() + tight + args);
+    const Result r = mpirun_run(
+        np, (np == 1 ? one_case : many_case) + " --out " + (dir / sub).string() + tight + args);
     EXPECT_EQ(r.exit_code, 0) << r.output;
   }
   const std::string result = read_file(dir / "npN" / "result.json");
   EXPECT_NE(result.find("\"ranks\": " + std::to_string(ranks())), std::string::npos) << result;
   EXPECT_NE(result.find("\"rows_shared\": true"), std::string::npos) << result;
-  const bool decomposed = !coupled && args.find("parallel.decompose=false") == std::string::npos;
+  const bool decomposed = args.find("parallel.decompose=false") == std::string::npos;
   EXPECT_NE(result.find(std::string("\"decomposed\": ") + (decomposed ? "true" : "false")),
             std::string::npos)
       << result;
   return {last_snapshot(dir / "np1"), last_snapshot(dir / "npN")};
+}
+
+// The example NAME on one rank and on ranks() (above).
+inline std::pair<std::filesystem::path, std::filesystem::path> run_on_one_and_many(
+    const std::string& scratch_name, const std::string& name, const std::string& args) {
+  return run_cases_on_one_and_many(scratch_name, example(name), example(name), args);
 }
 
 struct Fields {

@@ -84,7 +84,7 @@ DragResult cylinder_drag() {
   std::vector<double> cd(steps), cl(steps);
   std::printf("  t U/D    C_d     C_l    PPE it\n");
   for (int n = 0; n < steps; ++n) {
-    stage.before_fluid_step(dem, solver);
+    stage.move_particles(dem, solver);
     const auto st = solver.step(dt);
     DemLoads loads;
     stage.after_fluid_step(dem, solver, dt, loads);

@@ -60,7 +60,7 @@ TEST(ResolvedLiggghts, PmsParticlesFollowRealClumps) {
 
   dem.advance(15000);  // 15 ms: the clumps land on the floor and on each other, and turn
   const DemState& s1 = dem.state();
-  stage.before_fluid_step(s1, solver);
+  stage.move_particles(s1, solver);
   std::map<int, std::vector<const DemAtom*>> members;
   for (const auto& a : s1.atoms)
     if (a.body >= 0) members[a.body].push_back(&a);

@@ -78,7 +78,7 @@ StokesResult periodic_array(double L, double dx, double a, double g) {
   double f_window = 0, u_window = 0, momentum0 = 0;
   for (int n = 0; n < steps; ++n) {
     if (n == steps - window) momentum0 = rho * fluid_sum([&](std::size_t i) { return P.v[i][0]; });
-    stage.before_fluid_step(dem, solver);
+    stage.move_particles(dem, solver);
     solver.step(dt);
     DemLoads loads;
     stage.after_fluid_step(dem, solver, dt, loads);

@@ -268,7 +268,7 @@ TEST(ResolvedStage, LoadHandoverIsExact) {
   EXPECT_EQ(stage.removed_fluid(), info.particles);  // on the lattice: one fluid node each
   DemLoads loads;
   for (int n = 0; n < 3; ++n) {
-    stage.before_fluid_step(dem, solver);
+    stage.move_particles(dem, solver);
     solver.step(5e-4);
     loads = {};
     stage.after_fluid_step(dem, solver, 5e-4, loads);
@@ -342,13 +342,13 @@ TEST(ResolvedStage, BadSceneNamesCauseAndFix) {
     const Eigen::Quaterniond q(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()));
     dem.bodies[0].quat = {q.w(), q.x(), q.y(), q.z()};
     try {
-      stage.before_fluid_step(dem, solver);
+      stage.move_particles(dem, solver);
       FAIL() << "no error for a tilted clump";
     } catch (const std::runtime_error& e) {
       EXPECT_NE(std::string(e.what()).find("planar z"), std::string::npos) << e.what();
     }
     dem.bodies[0].id = 7;
-    EXPECT_THROW(stage.before_fluid_step(dem, solver), std::runtime_error);
+    EXPECT_THROW(stage.move_particles(dem, solver), std::runtime_error);
   }
 }
 

@@ -39,7 +39,7 @@ HeldResult held_clump_2d(bool dem_volume, int steps) {
   HeldResult res;
   res.raw_volume_ratio = stage.bodies()[0].fluid_volume / V;
   for (int n = 0; n < steps; ++n) {
-    stage.before_fluid_step(dem, solver);
+    stage.move_particles(dem, solver);
     solver.step(5e-4);
     DemLoads loads;
     stage.after_fluid_step(dem, solver, 5e-4, loads);
@@ -92,7 +92,7 @@ TEST(ResolvedArchimedes, HeldFreeSphereBesideAClumpFeelsRhoGVOnItsAtom) {
     double worst_sphere = 0, worst_body = 0, lateral = 0;
     const double v_sphere = 4.0 / 3.0 * M_PI * std::pow(0.02, 3);
     for (int n = 0; n < 100; ++n) {
-      stage.before_fluid_step(dem, solver);
+      stage.move_particles(dem, solver);
       solver.step(5e-4);
       DemLoads loads;
       stage.after_fluid_step(dem, solver, 5e-4, loads);
@@ -142,7 +142,7 @@ TEST(ResolvedArchimedes, HeldClumpIn3DTankFeelsRhoGV) {
   const double buoyancy = kRho * kG * dem.bodies[0].volume;
   double ferr = 0, lateral = 0, torque = 0;
   for (int n = 0; n < 20; ++n) {
-    stage.before_fluid_step(dem, solver);
+    stage.move_particles(dem, solver);
     solver.step(5e-4);
     DemLoads loads;
     stage.after_fluid_step(dem, solver, 5e-4, loads);
@@ -177,7 +177,7 @@ Trajectory release(FluidScene<2> scene, DemState dem, const ResolvedSettings& se
   Trajectory tr;
   double theta = 0;
   for (int n = 0; n < steps; ++n) {
-    stage.before_fluid_step(dem, solver);
+    stage.move_particles(dem, solver);
     solver.step(dt);
     DemLoads loads;
     stage.after_fluid_step(dem, solver, dt, loads);
@@ -261,7 +261,7 @@ TEST(ResolvedRelease, LightBoxFloatsAtArchimedesDraft) {
   int draft_n = 0;
   std::printf("  t [s]   water level [m]   draft/H\n");
   for (int n = 1; n <= steps; ++n) {
-    stage.before_fluid_step(dem, solver);
+    stage.move_particles(dem, solver);
     solver.step(dt);
     DemLoads loads;
     stage.after_fluid_step(dem, solver, dt, loads);
@@ -327,7 +327,7 @@ TEST(ResolvedRelease, SpinningClumpInClosedBoxSpinsDownWithoutEnergyGain) {
   double worst_gain = 0, worst_spin = 0, worst_spin_up = 0, e = e0, l = l0;
   std::printf("  t [s]  omega/omega0  E/E0     L/L0\n");
   for (int n = 1; n <= 500; ++n) {
-    stage.before_fluid_step(dem, solver);
+    stage.move_particles(dem, solver);
     solver.step(dt);
     DemLoads loads;
     stage.after_fluid_step(dem, solver, dt, loads);
