@@ -4,7 +4,7 @@
 # and steps its own part), 2 ranks with shared rows (layout 2x1s: every rank holds the whole
 # fluid and computes its block of rows of each stage, parallel.decompose = false) and 1 rank x 2
 # threads, PPE with amg, one run each in one go, same binary; the pressure equation is one PETSc
-# system (docs/parallel.md). Coupled cases always share rows.
+# system (docs/parallel.md). Coupled cases are decomposed too, PMS bodies included.
 # Parsed from the summary of `isphdem run` and result.json: wall time, particle-steps/s, PPE
 # iterations per step, the PPE's setup and iteration ms per step, the exchanges' ms per step,
 # how the fluid was split, the largest resident memory of a rank (/usr/bin/time) and the wall
