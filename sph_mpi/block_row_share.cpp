@@ -1,8 +1,5 @@
 #include "block_row_share.hpp"
 
-#include <stdexcept>
-#include <string>
-
 #include "mpi_collectives.hpp"
 
 namespace isph {
@@ -15,16 +12,11 @@ BlockRowShare::BlockRowShare(MPI_Comm comm) : comm_(comm) {
 void BlockRowShare::exchange_rows(void* data, std::size_t row_bytes, int n) const {
   std::vector<int> counts(parts_), starts(parts_);
   for (int r = 0; r < parts_; ++r) {
-    const long first = block_start(n, r, parts_), last = block_start(n, r + 1, parts_);
-    // Byte counts are ints in MPI: a block beyond 2 GiB is not a block of one node's rows.
-    if ((last - first) * static_cast<long>(row_bytes) > 2147483647L ||
-        first * static_cast<long>(row_bytes) > 2147483647L)
-      throw std::length_error("row exchange of " + std::to_string(n) + " rows of " +
-                              std::to_string(row_bytes) + " bytes exceeds MPI's int counts");
-    starts[r] = static_cast<int>(first * static_cast<long>(row_bytes));
-    counts[r] = static_cast<int>((last - first) * static_cast<long>(row_bytes));
+    starts[r] = block_start(n, r, parts_);
+    counts[r] = block_start(n, r + 1, parts_) - starts[r];
   }
-  MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, data, counts.data(), starts.data(), MPI_BYTE,
+  const collectives::ItemType row(row_bytes);
+  MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, data, counts.data(), starts.data(), row.get(),
                  comm_);
 }
 

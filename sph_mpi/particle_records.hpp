@@ -10,6 +10,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "mpi_collectives.hpp"
 #include "particles.hpp"
 
 namespace isph::records {
@@ -57,17 +58,17 @@ inline void alltoallv_into(MPI_Comm comm, const char* send, const std::vector<in
                            const std::vector<int>& recv_counts, std::size_t item_bytes,
                            char* recv) {
   const int size = static_cast<int>(send_counts.size());
-  std::vector<int> sc(size), sd(size), rc(size), rd(size);
+  std::vector<int> sd(size), rd(size);
   int s_at = 0, r_at = 0;
   for (int r = 0; r < size; ++r) {
-    sc[r] = send_counts[r] * static_cast<int>(item_bytes);
-    rc[r] = recv_counts[r] * static_cast<int>(item_bytes);
     sd[r] = s_at;
     rd[r] = r_at;
-    s_at += sc[r];
-    r_at += rc[r];
+    s_at += send_counts[r];
+    r_at += recv_counts[r];
   }
-  MPI_Alltoallv(send, sc.data(), sd.data(), MPI_BYTE, recv, rc.data(), rd.data(), MPI_BYTE, comm);
+  const collectives::ItemType item(item_bytes);
+  MPI_Alltoallv(send, send_counts.data(), sd.data(), item.get(), recv, recv_counts.data(),
+                rd.data(), item.get(), comm);
 }
 
 // As above, the receive counts exchanged first: returns what arrives and sets recv_counts.
