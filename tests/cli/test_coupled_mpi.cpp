@@ -170,6 +170,38 @@ TEST(CoupledMpi, ClumpInTheWaterlineTakesTheOneRankLoad) {
   EXPECT_LE(dp, 1e-6);
 }
 
+TEST(CoupledMpi, ClumpIn3DTakesTheOneRankLoad) {
+  // Resolved, decomposed, 3D: the settling clump (r = 3 mm) started astride the fluid's first
+  // cut (z ~ 40 mm), its PMS particles on both ranks, its torque a vector summed over them. It is
+  // inserted in LIGGGHTS's rank 0 (`processors 2 1 1`: x < 20 mm), whose random insertion is the
+  // one-rank run's.
+  const auto many =
+      edited_example("coupled_mpi_clump_3d", "settling_clump_3d",
+                     {{"region          box", "processors      2 1 1\nregion          box"}});
+  const auto [a_file, b_file] = run_cases_on_one_and_many(
+      "coupled_mpi_clump_3d_runs", example("settling_clump_3d"), (many / "case.toml").string(),
+      "--set time.end=0.02 --set output.interval=0.02 --set dem.variables.x0=0.01"
+      " --set dem.variables.z0=0.041");
+  if (::testing::Test::HasFailure()) return;
+  ASSERT_EQ(a_file.filename(), b_file.filename());
+  const Fields ba = read_fields(a_file, "bodies"), bb = read_fields(b_file, "bodies");
+  ASSERT_EQ(ba.x.size(), 3u);
+  ASSERT_EQ(bb.x.size(), 3u);
+  h5_read::File a(a_file.string()), b(b_file.string());
+  const auto fa = a.read("bodies/force_hydro").f64, fb = b.read("bodies/force_hydro").f64;
+  const auto ta = a.read("bodies/torque_hydro").f64, tb = b.read("bodies/torque_hydro").f64;
+  const double dx = max_difference(ba.x, bb.x), dv = max_difference(ba.v, bb.v),
+               df = max_difference(fa, fb) / max_abs(fa);
+  std::printf(
+      "clump in 3D, 1 vs %d ranks: |dx| = %.2e m, |dv| = %.2e of %.4f m/s, |dF| = %.2e max|F|, "
+      "|dT| = %.2e N m of %.2e\n",
+      ranks(), dx, dv, max_abs(ba.v), df, max_difference(ta, tb), max_abs(ta));
+  EXPECT_LE(dx, 1e-10);
+  EXPECT_LE(dv, 1e-7 * max_abs(ba.v));
+  EXPECT_LE(df, 1e-6);
+  EXPECT_LE(max_difference(ta, tb), 1e-6 * max_abs(ta) + 1e-15);
+}
+
 TEST(CoupledMpi, ScriptWithoutGrainsOnTheRanksStopsTheRun) {
   // The settling clump's insertion region (2 mm, around the box centre) is cut by the processor
   // boundary on 2 ranks, and LIGGGHTS only warns that it inserted nothing.
