@@ -23,35 +23,51 @@ IsphSolver<Dim>::IsphSolver(const IsphConfig<Dim>& config, const Domain<Dim>& do
       unit_solver_(make_linear_solver(config.pressure_solver)) {
   if (!(particles_.spacing > 0.0))
     throw SimulationError("particle spacing must be positive (particles.spacing)");
-  if (particles_.size() == 0) throw SimulationError("the case creates no particles");
+  // A process's share of a split scene (Particles::keep_parts) may be empty; the scene is not.
+  if (particles_.size() == 0 && particles_.next_id == 0)
+    throw SimulationError("the case creates no particles");
   if (!(config.density > 0.0)) throw SimulationError("fluid.density must be positive");
   if (config.viscosity < 0.0) throw SimulationError("fluid.viscosity must not be negative");
-  // Periodic axes too: a block sticking out of a periodic box would wrap onto other particles.
-  for (std::size_t i = 0; i < particles_.size(); ++i)
-    if (((particles_.x[i] - domain_.lo).array() < 0.0).any() ||
-        ((particles_.x[i] - domain_.hi).array() > 0.0).any())
-      throw SimulationError("particle " + std::to_string(particles_.id[i]) + " at " +
-                            format_vector(particles_.x[i]) +
-                            " starts outside the domain box: enlarge domain.min/domain.max");
+  check_inside(particles_, domain_);
   for (auto& x : particles_.x) domain_.wrap(x);
   n0_ = reference_number_density(kernel_, particles_.spacing);
 }
 
 template <int Dim>
-void IsphSolver<Dim>::decompose(std::shared_ptr<Decomposition<Dim>> d) {
+void IsphSolver<Dim>::check_inside(const Particles<Dim>& particles, const Domain<Dim>& domain) {
+  // Periodic axes too: a block sticking out of a periodic box would wrap onto other particles.
+  for (std::size_t i = 0; i < particles.size(); ++i)
+    if (((particles.x[i] - domain.lo).array() < 0.0).any() ||
+        ((particles.x[i] - domain.hi).array() > 0.0).any())
+      throw SimulationError("particle " + std::to_string(particles.id[i]) + " at " +
+                            format_vector(particles.x[i]) +
+                            " starts outside the domain box: enlarge domain.min/domain.max");
+}
+
+template <int Dim>
+void IsphSolver<Dim>::decompose(std::shared_ptr<Decomposition<Dim>> d, bool split) {
   try {
     linear_solver_->number_globally(nullptr);
     unit_solver_->number_globally(nullptr);
   } catch (const std::invalid_argument& e) {
     throw SimulationError(std::string("decomposed fluid: ") + e.what());
   }
-  // Every process holds every particle: each keeps every parts-th, then all go to their owners.
-  std::vector<int> mine;
-  for (int i = d->part(); i < static_cast<int>(particles_.size()); i += d->parts())
-    mine.push_back(i);
+  // Every process holds every particle: each keeps every parts-th, then all go to their owners
+  // (split: each holds its share already, the same particles). Whether any process holds solids
+  // is known to each alone only when it held them all.
   solids_ = particles_.count(kSolid) > 0;
-  particles_.permute(mine);
-  particles_.for_each_array([&](auto& a) { a.resize(mine.size()); });
+  if (split) {
+    solids_ = d->max(solids_ ? 1.0 : 0.0) > 0.0;
+  } else {
+    std::vector<int> mine;
+    for (int i = d->part(); i < static_cast<int>(particles_.size()); i += d->parts())
+      mine.push_back(i);
+    particles_.permute(mine);
+    particles_.for_each_array([&](auto& a) {
+      a.resize(mine.size());
+      a.shrink_to_fit();  // the whole scene's memory goes back
+    });
+  }
   d->migrate(particles_, nullptr);
   decomposition_ = d;
   share_ = std::move(d);

@@ -158,11 +158,16 @@ class IsphSolver {
   void share_rows(std::shared_ptr<const RowShare> share) { share_ = std::move(share); }
   // Decomposes the fluid over the processes of `d` (sph/decomposition.hpp): from now on this
   // process steps only the particles it owns, and particles() holds them alone between steps.
-  // Every process must have been given every particle; collective. Needs the distributed
+  // Every process must have been given every particle, or (split) its share of a scene built
+  // with Particles::keep_parts = d's parts; collective. Needs the distributed
   // pressure solver (solver.preconditioner = "amg"). PMS solids travel between the processes
   // as fluid particles do; their bodies' loads are then each process's share (rigid_solid_loads
   // over its own particles, summed over decomposition()).
-  void decompose(std::shared_ptr<Decomposition<Dim>> d);
+  void decompose(std::shared_ptr<Decomposition<Dim>> d, bool split = false);
+  // The constructor's check of a scene: every particle starts inside the domain box (throws
+  // SimulationError naming the first that does not). For a process's share of a split scene,
+  // callable before the processes construct their solvers, so that all can stop together.
+  static void check_inside(const Particles<Dim>& particles, const Domain<Dim>& domain);
   bool decomposed() const { return decomposition_ != nullptr; }
   // Decomposed: sends the particles that left this process's region to their owners. step()
   // does it at its start unless called since the last step: a coupled driver calls it before its

@@ -6,6 +6,10 @@ namespace isph {
 
 template <int Dim>
 void Particles<Dim>::add(const Vec<Dim>& pos, const Vec<Dim>& vel, int32_t k) {
+  if (keep_parts > 1 && next_id % keep_parts != keep_part) {
+    ++next_id;
+    return;
+  }
   x.push_back(pos);
   v.push_back(vel);
   p.push_back(0.0);

@@ -39,10 +39,15 @@ struct Particles {
   double volume = 0.0;   // particle volume dx^Dim (uniform spacing)
   double spacing = 0.0;  // dx
   int64_t next_id = 0;
+  // A scene built on several processes at once, each keeping only its share (so that none holds
+  // the whole): add() numbers every particle but stores only those whose id is keep_part modulo
+  // keep_parts. Each process then holds the particles IsphSolver::decompose would have kept of
+  // the whole scene, with the same ids.
+  int64_t keep_part = 0, keep_parts = 1;
 
   std::size_t size() const { return x.size(); }
 
-  // Appends one particle; id defaults to the next free one.
+  // Appends one particle with the next free id (unless not this process's share, above).
   void add(const Vec<Dim>& pos, const Vec<Dim>& vel, int32_t k);
 
   // Reorders every array so that new index n holds old index perm[n].

@@ -107,10 +107,13 @@ std::array<bool, 2 * Dim> closed_faces(const toml::table& t, const std::string& 
 }  // namespace
 
 template <int Dim>
-FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
+FluidScene<Dim> build_fluid_scene(const CaseFile& c, int part, int parts) {
   FluidScene<Dim> s;
   const std::size_t D = Dim;
   auto& cfg = s.config;
+  s.particles.keep_part = part;
+  s.particles.keep_parts = parts;
+  s.split = parts > 1;
 
   const double dx = c.positive("particles.spacing");
   s.particles.spacing = dx;
@@ -207,18 +210,19 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
     const Vec<Dim> lo = to_vec<Dim>(table_numbers(*t, "min", D, ctx));
     const Vec<Dim> hi = to_vec<Dim>(table_numbers(*t, "max", D, ctx));
     check_box<Dim>(lo, hi, ctx);
-    const std::size_t added =
-        isph::fill_box<Dim>(s.particles, lo, hi, dx, isph::kFluid, [&](const Vec<Dim>& x) {
-          for (const auto& b : wall_blocks)
-            if ((x.array() >= b.lo.array()).all() && (x.array() <= b.hi.array()).all())
-              return false;
-          return true;
-        });
-    if (added == 0)
+    const int64_t before = s.particles.next_id;  // all processes' particles, split or not
+    isph::fill_box<Dim>(s.particles, lo, hi, dx, isph::kFluid, [&](const Vec<Dim>& x) {
+      for (const auto& b : wall_blocks)
+        if ((x.array() >= b.lo.array()).all() && (x.array() <= b.hi.array()).all()) return false;
+      return true;
+    });
+    if (s.particles.next_id == before)
       throw CaseError("'" + ctx + "' holds no particle at spacing " + std::to_string(dx) +
                       " m: make the block at least one spacing wide");
   }
 
+  s.particles.keep_part = 0;  // what is added later (PMS solids) is every process's
+  s.particles.keep_parts = 1;
   const std::string init = c.string("initial.velocity", "rest");
   if (init == "taylor_green") {
     // u = -U cos(kx) sin(ky), v = U sin(kx) cos(ky) with k = 2 pi / L (domain length along x).
@@ -318,7 +322,7 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c) {
   return s;
 }
 
-template FluidScene<2> build_fluid_scene<2>(const CaseFile&);
-template FluidScene<3> build_fluid_scene<3>(const CaseFile&);
+template FluidScene<2> build_fluid_scene<2>(const CaseFile&, int, int);
+template FluidScene<3> build_fluid_scene<3>(const CaseFile&, int, int);
 
 }  // namespace isphdem

@@ -15,6 +15,8 @@ struct FluidScene {
   isph::Domain<Dim> domain;
   isph::Particles<Dim> particles;
   isph::IsphConfig<Dim> config;
+  // The particles are this process's share only (build_fluid_scene's part of parts).
+  bool split = false;
 };
 
 // Keys of the tables above, for CaseFile::load.
@@ -23,7 +25,11 @@ std::vector<std::string> fluid_scene_keys();
 // 2 or 3, from case.dimension.
 int case_dimension(const CaseFile& c);
 
+// With parts > 1 this process keeps only its share of the particles, those whose id is `part`
+// modulo `parts` (isph::Particles::keep_parts), for a fluid decomposed over `parts` processes
+// from the start (FluidRun): no process then holds the whole scene. Every check of the case is
+// still made on every process alike.
 template <int Dim>
-FluidScene<Dim> build_fluid_scene(const CaseFile& c);
+FluidScene<Dim> build_fluid_scene(const CaseFile& c, int part = 0, int parts = 1);
 
 }  // namespace isphdem

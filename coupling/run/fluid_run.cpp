@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 
 #include "block_row_share.hpp"
 #include "rcb_decomposition.hpp"
@@ -20,12 +21,30 @@ isph::IsphConfig<Dim> with_limits(isph::IsphConfig<Dim> c, const RunSettings& s)
 }
 }  // namespace
 
+namespace {
+int world_size() {
+  int mpi = 0, ranks = 1;
+  MPI_Initialized(&mpi);
+  if (mpi) MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  return ranks;
+}
+}  // namespace
+
 template <int Dim>
 FluidRun<Dim>::FluidRun(FluidScene<Dim> scene, const RunSettings& settings)
     : settings_(settings),
       solver_(with_limits(scene.config, settings), scene.domain, std::move(scene.particles)) {
+  // Under mpirun every rank holds the whole fluid; each computes its block of rows of every
+  // stage (sph/row_share.hpp) where the pressure solver is distributed too (amg).
+  const int ranks = world_size();
+  if (ranks > 1) solver_.share_rows(std::make_shared<isph::BlockRowShare>(MPI_COMM_WORLD));
+  if (scene.split) {
+    if (!decomposes(settings_, solver_.config().pressure_solver.preconditioner, ranks))
+      throw std::logic_error("FluidRun: a split scene for a run that is not decomposed");
+    decompose_now(true);
+  }
   if (settings_.fixed_dt) {
-    const auto l = solver_.limits();
+    const auto l = solver_.limits();  // over all ranks when decomposed
     if (*settings_.fixed_dt > l.min()) {
       std::ostringstream m;
       m << "time.dt = " << *settings_.fixed_dt << " s is beyond the stable limit " << l.min()
@@ -36,32 +55,36 @@ FluidRun<Dim>::FluidRun(FluidScene<Dim> scene, const RunSettings& settings)
       throw CaseError(m.str());
     }
   }
-  // Under mpirun every rank holds the whole fluid; each computes its block of rows of every
-  // stage (sph/row_share.hpp) where the pressure solver is distributed too (amg).
-  int mpi = 0, ranks = 1;
-  MPI_Initialized(&mpi);
-  if (mpi) MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  if (ranks > 1) solver_.share_rows(std::make_shared<isph::BlockRowShare>(MPI_COMM_WORLD));
+}
+
+template <int Dim>
+bool FluidRun<Dim>::decomposes(const RunSettings& settings, const std::string& preconditioner,
+                               int ranks) {
+  return ranks > 1 && preconditioner == "amg" && settings.decompose.value_or(true);
 }
 
 template <int Dim>
 bool FluidRun<Dim>::decompose() {
-  int mpi = 0, ranks = 1;
-  MPI_Initialized(&mpi);
-  if (mpi) MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  if (solver_.decomposed()) return true;  // a split scene, decomposed at construction
+  const int ranks = world_size();
   const bool distributed = solver_.config().pressure_solver.preconditioner == "amg";
   if (ranks == 1 || !settings_.decompose.value_or(distributed)) return false;
   if (!distributed)
     throw CaseError(
         "parallel.decompose = true needs the pressure solved over the ranks: set "
         "solver.preconditioner = \"amg\" (or parallel.decompose = false)");
+  decompose_now(false);
+  return true;
+}
+
+template <int Dim>
+void FluidRun<Dim>::decompose_now(bool split) {
   try {
     solver_.decompose(
-        std::make_shared<isph::RcbDecomposition<Dim>>(MPI_COMM_WORLD, solver_.domain()));
+        std::make_shared<isph::RcbDecomposition<Dim>>(MPI_COMM_WORLD, solver_.domain()), split);
   } catch (const isph::SimulationError& e) {
     throw CaseError(e.what());
   }
-  return true;
 }
 
 template <int Dim>

@@ -23,6 +23,12 @@ void check_replicas(const isph::Particles<Dim>& particles, long step);
 // exception goes on to the caller as usual.
 void write_on_rank_zero(int rank, const std::function<void()>& write);
 
+// Runs `make` on every rank. With `collective`, if it throws on some ranks, every rank throws a
+// CaseError with the message of the lowest rank that failed: for checks that see only a rank's
+// own share of the particles (a split scene, build_fluid_scene), so that no rank goes on alone.
+// Without, the exception goes on to the caller as usual.
+void agree_on_failure(bool collective, const std::function<void()>& make);
+
 // Runs `write` (a collective snapshot write) on every rank. If it throws on several ranks, rank 0
 // prints the message and MPI_Abort stops every rank; on one rank the exception goes on to the
 // caller as usual.

@@ -4,10 +4,12 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -103,25 +105,45 @@ bool run_to_end(Run& run, const RunSettings& settings, double end_tolerance,
 // writes diagnostics.csv.
 template <int Dim>
 int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
-  int rank = 0;
+  int rank = 0, ranks = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   const bool talk = rank == 0 && !args.quiet;
   const RunSettings settings = parse_run_settings(c);
-  FluidRun<Dim> run(build_fluid_scene<Dim>(c), settings);
+  // Decomposed from the start: each rank builds only its share of the particles, and no rank
+  // ever holds the whole fluid. The checks of the scene then see a rank's share: every rank
+  // stops with the first failing rank's message.
+  const bool split = FluidRun<Dim>::decomposes(
+      settings, c.string("solver.preconditioner", isph::LinearSolverConfig{}.preconditioner),
+      ranks);
+  FluidScene<Dim> scene;
+  agree_on_failure(split, [&] {
+    scene = build_fluid_scene<Dim>(c, rank, split ? ranks : 1);
+    isph::IsphSolver<Dim>::check_inside(scene.particles, scene.domain);
+  });
+  FluidRun<Dim> run(std::move(scene), settings);  // collective when split (decomposed at once)
   auto& solver = run.solver();
   const auto& P = solver.particles();
+  // The ranks must start from the same fluid, whether or not they then keep only their part.
+  if (!split) check_replicas(P, solver.steps());
+  const bool decomposed = run.decompose();
+  // Over all ranks when decomposed (collective): the counts, the limits and the first step.
+  std::array<double, 3> count{double(P.count(isph::kFluid)), double(P.count(isph::kWall)),
+                              double(P.size())};
+  if (const isph::RowShare* d = solver.decomposition()) d->sum_in_place(count.data(), 3);
+  const long particles = long(count[2]);
+  const auto l = solver.limits();
+  const double first_dt = run.next_dt();
 
   if (talk) {
-    const auto l = solver.limits();
-    std::printf("isphdem run: %s (%dD)\n  particles: %zu fluid, %zu wall; dx = %g m, h = %g m\n",
-                c.path().string().c_str(), Dim, P.count(isph::kFluid), P.count(isph::kWall),
-                P.spacing, solver.kernel().h());
+    std::printf("isphdem run: %s (%dD)\n  particles: %.0f fluid, %.0f wall; dx = %g m, h = %g m\n",
+                c.path().string().c_str(), Dim, count[0], count[1], P.spacing, solver.kernel().h());
     if (settings.fixed_dt)
       std::printf("  time step: fixed %g s (stable limit now %g s, %s)\n", *settings.fixed_dt,
                   l.min(), l.limiting().c_str());
     else
       std::printf("  time step: auto, now %g s (%s limit; CFL %g, viscous %g, force %g s)\n",
-                  run.next_dt(), l.limiting().c_str(), l.cfl, l.viscous, l.force);
+                  first_dt, l.limiting().c_str(), l.cfl, l.viscous, l.force);
     std::printf("  output: %s every %g s to t = %g s\n", args.out.string().c_str(),
                 settings.output_interval, settings.t_end);
     std::fflush(stdout);
@@ -140,10 +162,6 @@ int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
     f << "# " << c.path().string() << " with the overrides of this run\n" << c.table() << "\n";
     diagnostics = std::make_unique<DiagnosticsWriter>(args.out / "diagnostics.csv", columns);
   }
-  // The ranks must start from the same fluid, whether or not they then keep only their part.
-  check_replicas(P, solver.steps());
-  const long particles = long(P.size());
-  const bool decomposed = run.decompose();
   auto snapshot = [&]() {
     if (!decomposed) check_replicas(P, solver.steps());
     write_collectively(rank, [&] {

@@ -105,6 +105,38 @@ TEST(FluidMpi, UnstableRunStopsEveryRankWithOneMessage) {
   EXPECT_NE(result.find("\"status\": \"stopped\""), std::string::npos) << result;
 }
 
+TEST(FluidMpi, SplitSceneWithAParticleOutsideStopsEveryRankWithItsMessage) {
+  // Decomposed from the start, each rank builds only its share of the scene (particle ids
+  // round-robin over the ranks): a one-particle block outside the domain, the scene's last
+  // particle (id 399 of 21 x 19 + 1), is a rank's other than 0. Every rank must stop with that
+  // rank's message, said once, before any snapshot.
+  const auto dir = scratch("fluid_mpi_split_outside");
+  write_file(dir / "case.toml", R"([case]
+dimension = 2
+[domain]
+min = [0.0, 0.0]
+max = [0.11, 0.2]
+[particles]
+spacing = 0.005
+[[fluid.blocks]]
+min = [0.0, 0.0]
+max = [0.105, 0.095]
+[[fluid.blocks]]
+min = [0.11, 0.0]
+max = [0.115, 0.005]
+[solver]
+preconditioner = "amg"
+[time]
+end = 0.01
+)");
+  const Result r =
+      mpirun_run(ranks(), (dir / "case.toml").string() + " --out " + (dir / "out").string());
+  std::printf("%s", r.output.c_str());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(count(r.output, "particle 399 at (0.1125, 0.0025) starts outside the domain box"), 1);
+  EXPECT_EQ(count_snapshots(dir / "out"), 0);
+}
+
 TEST(FluidMpi, ParticleLeavingOnOneRankStopsEveryRankWithItsMessage) {
   // A block of water "falls" freely upwards out of the top of an open domain. Decomposed, the
   // tall domain is cut across the block (rank 0 below), and the highest particles, which leave

@@ -155,3 +155,44 @@ TEST(DecomposedFluidMpi, DamBreakFrontIsRebalanced) {
 
 }  // namespace
 }  // namespace isphdem::validation
+
+namespace isphdem::validation {
+namespace {
+
+TEST(DecomposedFluidMpi, SplitSceneIsTheWholeSceneDecomposed) {
+  // `isphdem run` decomposed builds on each rank only its share of the scene (ids round-robin,
+  // Particles::keep_parts) and never holds the whole: after the decomposition each rank must
+  // hold exactly the particles, with the same values, that the whole scene decomposed gives it.
+  // The circulation tank: wall boxes, wall blocks the fluid leaves out, a forcing zone.
+  const CaseFile c = CaseFile::load(example("circulation_tank_2d"),
+                                    {"solver.preconditioner=\"amg\""}, all_fluid_keys());
+  const RunSettings settings = parse_run_settings(c);
+  FluidScene<2> whole_scene = build_fluid_scene<2>(c);
+  const isph::Domain<2> domain = whole_scene.domain;
+  const std::size_t total = whole_scene.particles.size();
+  FluidRun<2> whole(std::move(whole_scene), settings);
+  whole.solver().decompose(std::make_shared<isph::RcbDecomposition<2>>(MPI_COMM_WORLD, domain));
+  FluidScene<2> share = build_fluid_scene<2>(c, isph::test::rank(), ranks());
+  const std::size_t built = share.particles.size();
+  ASSERT_TRUE(share.split);
+  FluidRun<2> split(std::move(share), settings);  // decomposes at once
+  ASSERT_TRUE(split.solver().decomposed());
+  const auto& A = whole.solver().particles();
+  const auto& B = split.solver().particles();
+  ASSERT_EQ(A.size(), B.size());
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < A.size(); ++i)
+    differ += A.id[i] != B.id[i] || A.x[i] != B.x[i] || A.v[i] != B.v[i] || A.p[i] != B.p[i] ||
+              A.kind[i] != B.kind[i] || A.normal[i] != B.normal[i] ||
+              A.wall_distance[i] != B.wall_distance[i];
+  if (isph::test::rank() == 0)
+    std::printf(
+        "circulation tank split over %d ranks: rank 0 built %zu of %zu particles, holds "
+        "%zu after the decomposition; %zu differ from the whole scene's\n",
+        ranks(), built, total, B.size(), differ);
+  EXPECT_EQ(differ, 0u);
+  EXPECT_LE(built, total / ranks() + 1);
+}
+
+}  // namespace
+}  // namespace isphdem::validation
