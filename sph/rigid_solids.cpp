@@ -98,6 +98,9 @@ void add_rigid_body(Particles<Dim>& particles, int body, const std::vector<Vec<D
   std::vector<double> depth;
   std::vector<Vec<Dim>> outward;
   surface_geometry(x, particles.spacing, depth, outward);
+  // Every particle's arrays are set through back(): add() must store each one.
+  if (particles.keep_parts > 1)
+    throw std::logic_error("add_rigid_body: the particles keep only a share (keep_parts)");
   for (std::size_t k = 0; k < x.size(); ++k) {
     const Vec<Dim> r = x[k] - pose.x;
     particles.add(x[k], pose.v + rigid_velocity<Dim>(pose.omega, r), kSolid);

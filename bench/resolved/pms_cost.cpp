@@ -91,7 +91,10 @@ Timing run(int n, int s, int steps) {
   for (const auto& b : stage.bodies()) t.pms += b.particles;
   const auto one_step = [&](bool timed) {
     const double t0 = omp_get_wtime();
-    if (n > 0) stage.before_fluid_step(dem, solver);
+    if (n > 0) {
+      stage.move_particles(dem, solver);
+      stage.before_fluid_step(dem, solver);
+    }
     const double t1 = omp_get_wtime(), solve0 = solver.timings().solve;
     const auto st = solver.step(dt);
     const double t2 = omp_get_wtime(), solve1 = solver.timings().solve;

@@ -110,6 +110,10 @@ void ResolvedCoupling<Dim>::initialize(const DemState& dem, isph::IsphSolver<Dim
     throw std::invalid_argument("resolved coupling: fluid density " + num(settings_.fluid_density) +
                                 " differs from the solver's " + num(solver.config().density));
   if (!info_.empty()) throw std::logic_error("resolved coupling: initialize() called twice");
+  // Every process adds every body's particles and finds their lattice in the whole fluid: the
+  // fluid is decomposed after this, with the solids in it (IsphSolver::decompose).
+  if (solver.decomposed())
+    throw std::logic_error("resolved coupling: initialize() after the fluid was decomposed");
   if (P.count(isph::kSolid) > 0)
     throw std::invalid_argument(
         "resolved coupling: the fluid scene already has solid particles; PMS particles are made "

@@ -34,6 +34,7 @@
 #include "run/erosion_diagnostics.hpp"
 #include "run/fluid_run.hpp"
 #include "run/replicated_ranks.hpp"
+#include "run/run_loop.hpp"
 #include "run/run_report.hpp"
 #include "study/run_result.hpp"
 #include "unresolved/unresolved_coupling.hpp"
@@ -44,20 +45,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The pressure solve per step, setup (AMG hierarchy, factorisation) apart from the iterations:
-// the two numbers a user changing solver.preconditioner or solver.petsc.setup_reuse compares.
-template <int Dim>
-void print_ppe_cost(const isph::IsphSolver<Dim>& solver) {
-  const auto& t = solver.timings();
-  const double steps = std::max(1L, solver.steps());
-  std::printf("  pressure solve (%s): setup %.3g ms/step, iterations %.3g ms/step\n",
-              solver.config().pressure_solver.preconditioner.c_str(), 1e3 * t.solve_setup / steps,
-              1e3 * (t.solve - t.solve_setup) / steps);
-  if (solver.rows_shared())
-    std::printf("  rows shared between the ranks: exchanges %.3g ms/step (%.1f%% of the fluid)\n",
-                1e3 * t.exchange / steps, 100 * t.exchange / t.total());
-}
-
 const char* kUsage =
     "usage: isphdem run CASE.toml --out DIR [--set key=value ...] [--quiet]\n"
     "  --out DIR        output directory (snap_<step>.h5, *.xdmf, diagnostics.csv, result.json);\n"
@@ -66,37 +53,6 @@ const char* kUsage =
     "  --quiet          no progress line and no summary\n";
 
 using Arguments = VerbArguments;
-
-// Advances `run` (FluidRun or CoupledRun) to settings.t_end with each output time as a landing
-// point, so snapshots fall on t = k * interval. A SimulationError stops the run: the progress
-// line is closed, `report` says where it stopped (the snapshots already written are complete),
-// `why` gets the error, `cause` its one-word cause, and false comes back. `end_tolerance` is the
-// relative slack on t_end.
-template <class Run, class StepCallback, class WriteSnapshot>
-bool run_to_end(Run& run, const RunSettings& settings, double end_tolerance,
-                const StepCallback& after_step, const WriteSnapshot& snapshot,
-                ProgressLine& progress, bool report, const fs::path& out, std::string& why,
-                std::string& cause) {
-  const auto& solver = run.solver();
-  try {
-    for (long k = 1; solver.time() < settings.t_end * (1.0 - end_tolerance); ++k) {
-      run.run_until(std::min(k * settings.output_interval, settings.t_end), after_step);
-      snapshot();
-    }
-  } catch (const isph::SimulationError& e) {
-    progress.finish();
-    why = e.what();
-    cause = e.cause();
-    if (report)
-      std::fprintf(stderr,
-                   "isphdem run: stopped at t = %g s, step %ld: %s\n"
-                   "  output written so far in %s is complete and valid.\n",
-                   solver.time(), solver.steps(), e.what(), out.string().c_str());
-    return false;
-  }
-  progress.finish();
-  return true;
-}
 
 // A fluid-only case. On several ranks (mpirun) with solver.preconditioner = "amg" each rank holds
 // and steps its own part of the fluid (FluidRun::decompose), the pressure equation one system

@@ -1,0 +1,51 @@
+#pragma once
+// What the fluid-only and the coupled `isphdem run` share: the loop to t_end with each output
+// time a landing point, and the pressure solve's cost in the closing summary.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "case/run_settings.hpp"
+#include "io/progress_line.hpp"
+#include "isph_solver.hpp"
+
+namespace isphdem {
+
+// Advances `run` (FluidRun or CoupledRun) to settings.t_end with each output time as a landing
+// point, so snapshots fall on t = k * interval. A SimulationError stops the run: the progress
+// line is closed, `report` says where it stopped (the snapshots already written are complete),
+// `why` gets the error, `cause` its one-word cause, and false comes back. `end_tolerance` is the
+// relative slack on t_end.
+template <class Run, class StepCallback, class WriteSnapshot>
+bool run_to_end(Run& run, const RunSettings& settings, double end_tolerance,
+                const StepCallback& after_step, const WriteSnapshot& snapshot,
+                ProgressLine& progress, bool report, const std::filesystem::path& out,
+                std::string& why, std::string& cause) {
+  const auto& solver = run.solver();
+  try {
+    for (long k = 1; solver.time() < settings.t_end * (1.0 - end_tolerance); ++k) {
+      run.run_until(std::min(k * settings.output_interval, settings.t_end), after_step);
+      snapshot();
+    }
+  } catch (const isph::SimulationError& e) {
+    progress.finish();
+    why = e.what();
+    cause = e.cause();
+    if (report)
+      std::fprintf(stderr,
+                   "isphdem run: stopped at t = %g s, step %ld: %s\n"
+                   "  output written so far in %s is complete and valid.\n",
+                   solver.time(), solver.steps(), e.what(), out.string().c_str());
+    return false;
+  }
+  progress.finish();
+  return true;
+}
+
+// The pressure solve per step, setup (AMG hierarchy, factorisation) apart from the iterations:
+// the two numbers a user changing solver.preconditioner or solver.petsc.setup_reuse compares.
+template <int Dim>
+void print_ppe_cost(const isph::IsphSolver<Dim>& solver);
+
+}  // namespace isphdem
