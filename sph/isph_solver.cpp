@@ -52,13 +52,11 @@ void IsphSolver<Dim>::decompose(std::shared_ptr<Decomposition<Dim>> d, bool spli
   } catch (const std::invalid_argument& e) {
     throw SimulationError(std::string("decomposed fluid: ") + e.what());
   }
+  // Over all processes: a split scene's share may hold none of the solids.
+  solids_ = d->max(particles_.count(kSolid) > 0 ? 1.0 : 0.0) > 0.0;
   // Every process holds every particle: each keeps every parts-th, then all go to their owners
-  // (split: each holds its share already, the same particles). Whether any process holds solids
-  // is known to each alone only when it held them all.
-  solids_ = particles_.count(kSolid) > 0;
-  if (split) {
-    solids_ = d->max(solids_ ? 1.0 : 0.0) > 0.0;
-  } else {
+  // (split: each holds its share already, the same particles).
+  if (!split) {
     std::vector<int> mine;
     for (int i = d->part(); i < static_cast<int>(particles_.size()); i += d->parts())
       mine.push_back(i);

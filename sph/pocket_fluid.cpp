@@ -40,11 +40,10 @@ double solid_share(const Particles<Dim>& P, const Neighbors<Dim>& nb, int i) {
 template <int Dim>
 int follow_enclosing_solids(Particles<Dim>& P, const Neighbors<Dim>& nb, double onset, double rho0,
                             double dt, const RowShare* share) {
-  // Fluid-only and unresolved runs have no PMS particles: no sweep over the neighbours.
-  // Decomposed, a process without solids still takes part (the caller calls this only where
-  // some process holds solids).
+  // Called only where some process holds solids (IsphSolver::has_solids): a process without
+  // any still takes part in the exchanges below.
   const bool decomposed = share && share->decomposed();
-  if (!(onset < 1.0) || (!decomposed && P.count(kSolid) == 0)) return 0;
+  if (!(onset < 1.0)) return 0;
   const int n = static_cast<int>(P.size());
   const int first = share ? share->first(n) : 0, last = share ? share->last(n) : n;
   int blended = 0;

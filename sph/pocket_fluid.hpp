@@ -32,8 +32,9 @@ double solid_share(const Particles<Dim>& particles, const Neighbors<Dim>& nb, in
 // Applies the blend to every fluid particle (kind kFluid) with a solid share above `onset`, after
 // the corrector; adds the reaction to the solid neighbours' solid_force (N, per unit depth in
 // 2D, for a step dt with fluid density rho0). Returns the number of particles blended. onset >= 1
-// turns it off. With shared rows (sph/row_share.hpp, nb for this process's rows only) the blend
-// acts on this process's rows, and the reactions of all processes are added to every row's
+// turns it off. Sweeps every fluid row: call it only where the scene has solids (on some
+// process, decomposed). With shared rows (sph/row_share.hpp, nb for this process's rows only) the
+// blend acts on this process's rows, and the reactions of all processes are added to every row's
 // solid_force in the one-process order (velocities: exchange them after); decomposed
 // (sph/decomposition.hpp), to the owned solids' solid_force, wherever the fluid particle is.
 template <int Dim>

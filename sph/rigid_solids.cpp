@@ -185,10 +185,8 @@ void mark_dry_solids(Particles<Dim>& particles, const Neighbors<Dim>& nb, const 
   int nbodies = 0;
   for (int i = 0; i < n; ++i)
     if (P.kind[i] == kSolid) nbodies = std::max(nbodies, P.body[i] + 1);
-  // Decomposed, a process may hold no solid while others do: it still takes part in the
-  // exchanges below (the caller calls this only where some process holds solids).
-  const bool decomposed = share && share->decomposed();
-  if (nbodies == 0 && !decomposed) return;
+  // Called only where some process holds solids (IsphSolver::has_solids): a process without
+  // any still takes part in the exchanges below.
   const Vec<Dim> up = -gravity.normalized();
   // Fluid within one support of a body, then free-surface fluid within one support of those.
   std::vector<int> near(n, -1);

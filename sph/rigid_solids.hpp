@@ -92,9 +92,10 @@ constexpr uint8_t kDrySolid = 2;
 // line in 2D, its mean height in 3D); solid particles more than half a spacing above it become
 // dry (surface = kDrySolid: p = 0, no force), those within half a spacing of it get p = 0 like
 // the fluid's own top row (they still carry the pressure gradient below them, as that row does).
-// Bodies with no free surface near them are untouched. With shared rows (sph/row_share.hpp, nb
-// for this process's rows only) the waterline is fitted from all processes' points in the
-// one-process order, and the fluid rows' marks are this process's rows'.
+// Bodies with no free surface near them are untouched. Call it only where the scene has solids
+// (on some process, decomposed): it sweeps the fluid rows all the same. With shared rows
+// (sph/row_share.hpp, nb for this process's rows only) the waterline is fitted from all processes'
+// points in the one-process order, and the fluid rows' marks are this process's rows'.
 template <int Dim>
 void mark_dry_solids(Particles<Dim>& particles, const Neighbors<Dim>& nb, const Vec<Dim>& gravity,
                      const RowShare* share = nullptr);

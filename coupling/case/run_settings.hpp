@@ -20,8 +20,8 @@ struct RunSettings {
   // the advice for a time step beyond the stable limit must say.
   bool coupled = false;
   // parallel.decompose: under mpirun, each rank holds and steps only its own part of the fluid
-  // (docs/parallel.md). Unset: yes where the pressure solve is distributed (amg) and the case has
-  // no PMS bodies; else every rank holds the whole fluid and computes its block of rows.
+  // (docs/parallel.md), PMS bodies' particles included. Unset: yes where the pressure solve is
+  // distributed (amg); else every rank holds the whole fluid and computes its block of rows.
   std::optional<bool> decompose;
 };
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <thread>
 
+#include "block_row_share.hpp"
 #include "case/case_file.hpp"
 #include "format_number.hpp"
 #include "isph_solver.hpp"
@@ -76,17 +77,8 @@ void agree_on_failure(bool collective, const std::function<void()>& make) {
     failure = e.what();
     if (failure.empty()) failure = "an error without a message";
   }
-  int rank = 0, ranks = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  int first = failure.empty() ? ranks : rank;
-  MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
-  if (first == ranks) return;
-  int length = static_cast<int>(failure.size());
-  MPI_Bcast(&length, 1, MPI_INT, first, MPI_COMM_WORLD);
-  failure.resize(length);
-  MPI_Bcast(failure.data(), length, MPI_CHAR, first, MPI_COMM_WORLD);
-  throw CaseError(failure);
+  const std::string first = isph::BlockRowShare(MPI_COMM_WORLD).first_text(failure);
+  if (!first.empty()) throw CaseError(first);
 }
 
 void write_on_rank_zero(int rank, const std::function<void()>& write) {
