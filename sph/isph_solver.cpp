@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "format_number.hpp"
 #include "pocket_fluid.hpp"
 #include "stopwatch.hpp"
+#include "surface_remesh.hpp"
 
 namespace isph {
 
@@ -31,6 +33,25 @@ IsphSolver<Dim>::IsphSolver(const IsphConfig<Dim>& config, const Domain<Dim>& do
   check_inside(particles_, domain_);
   for (auto& x : particles_.x) domain_.wrap(x);
   n0_ = reference_number_density(kernel_, particles_.spacing);
+  if (config.surface_remesh_rows > 0) {
+    if (!(config.gravity.squaredNorm() > 0.0) || !config.free_surface)
+      throw SimulationError(
+          "solver.surface_remesh_rows needs a free surface under gravity (fluid.gravity)");
+    if (config.surface_remesh_every < 1)
+      throw SimulationError("solver.surface_remesh_every must be at least 1 step");
+    const Vec<Dim> up = -config.gravity.normalized();
+    surface_columns_ = surface_columns(particles_, up);
+    surface_top_ = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < particles_.size(); ++i)
+      if (particles_.kind[i] == kFluid)
+        surface_top_ = std::max(surface_top_, up.dot(particles_.x[i]));
+  }
+}
+
+template <int Dim>
+void IsphSolver<Dim>::remesh_surface() {
+  surface_top_ = remesh_surface_rows(particles_, kernel_, Vec<Dim>(-config_.gravity.normalized()),
+                                     surface_columns_, config_.surface_remesh_rows);
 }
 
 template <int Dim>
@@ -46,6 +67,13 @@ void IsphSolver<Dim>::check_inside(const Particles<Dim>& particles, const Domain
 
 template <int Dim>
 void IsphSolver<Dim>::decompose(std::shared_ptr<Decomposition<Dim>> d, bool split) {
+  // The remesh takes the highest particles of the whole surface (not yet gathered over
+  // processes).
+  if (!surface_columns_.empty())
+    throw SimulationError(
+        "solver.surface_remesh_rows remeshes the whole surface on one process and does not run "
+        "decomposed yet: run the case without mpirun (threads: OMP_NUM_THREADS), or set "
+        "solver.surface_remesh_rows = 0");
   try {
     linear_solver_->number_globally(nullptr);
     unit_solver_->number_globally(nullptr);
@@ -125,6 +153,8 @@ StepStats IsphSolver<Dim>::step(double dt) {
   if (!redistributed_) redistribute();
   redistributed_ = false;
   update_forcing_kinds();
+  if (!surface_columns_.empty() && steps_ > 0 && steps_ % config_.surface_remesh_every == 0)
+    remesh_surface();
   find_neighbors();  // the pair geometry and weights every stage below reuses
   {
     Stopwatch w(timings_.operators);

@@ -79,6 +79,13 @@ struct IsphConfig {
   // circulation tank, whose flow is 5 mm/s. Off by default: it moves the tank's break-up from
   // 1.33 s to 1.87 s, not to the 10 s (docs/fluid.md, "Known limitations").
   bool surface_refill = false;
+  // Remeshing of the top rows of a nearly flat free surface (sph/surface_remesh.hpp): this many
+  // rows, every surface_remesh_every steps; 0 turns it off. Needs gravity; not decomposed.
+  int surface_remesh_rows = 0;
+  int surface_remesh_every = 50;
+  // alpha_s in the band from the remeshed top row down to rows + 4 spacings under it, where the
+  // fluid has to follow the rows held flat; 0: alpha_s there too.
+  double surface_remesh_alpha_s = 0.0;
   // Smagorinsky eddy viscosity nu_T = (C_s dx)^2 sqrt(2 S:S), added to nu in the viscous term.
   bool smagorinsky = false;
   double smagorinsky_constant = 0.1;
@@ -209,6 +216,7 @@ class IsphSolver {
   void shift(double dt);                     // step_shifting.cpp
   void advect(double dt, StepStats& stats);  // step_correction.cpp
   void update_forcing_kinds();
+  void remesh_surface();  // isph_solver.cpp
   void keep_off_walls(int i);
   const ForcingZone<Dim>* zone_of(const Vec<Dim>& x) const;
   // Where the fastest particle is and what its support holds (for the CFL stop message).
@@ -261,6 +269,9 @@ class IsphSolver {
   std::vector<Vec<Dim>> grad_p_;       // decomposed: the owned rows' grad p of the last step
   double max_eddy_viscosity_ = 0.0;
   std::vector<Vec<Dim>> u_star_, wall_ghost_, shift_;
+  std::vector<Vec<Dim>> surface_columns_;
+  double surface_top_ = 0.0;  // height of the remeshed top row along -gravity  // the lattice
+                              // surface_remesh_rows remeshes onto
   std::vector<uint8_t> operator_mode_, full_support_, shift_mode_, dry_wall_;
   Eigen::VectorXd pressure_;
   Eigen::VectorXd unit_response_;      // q of spread_pinned_source, reused for a few steps

@@ -30,12 +30,23 @@ void IsphSolver<Dim>::compute_pressure_rhs(double dt) {
   auto& P = particles_;
   const double rho0 = config_.density;
   rhs_.assign(n, 0.0);
+  const bool remesh_band = !surface_columns_.empty() && config_.surface_remesh_alpha_s > 0.0;
+  const double band_depth = config_.surface_remesh_rows + 4;
+  const Vec<Dim> up = remesh_band ? Vec<Dim>(-config_.gravity.normalized()) : Vec<Dim>::Zero();
 #pragma omp parallel for schedule(static)
   for (int i = first_; i < last_; ++i) {
     if (P.kind[i] == kWall) continue;
-    const double density_error = full_support_[i] ? 1.0 - number_density_[i] / n0_ : 0.0;
-    rhs_[i] = rho0 / dt * divergence(nb_, op_, u_star_, i) +
-              config_.alpha_s * rho0 * density_error / (dt * dt);
+    // A forcing zone's particles have their velocity set after the correction: no pressure moves
+    // them, so a density error among them is not one the pressure equation can take back, and its
+    // source would only push the fluid around the zone.
+    const double density_error =
+        full_support_[i] && P.kind[i] != kForcing ? 1.0 - number_density_[i] / n0_ : 0.0;
+    // Under a remeshed surface: the band whose fluid has to follow the rows held flat.
+    const double alpha = remesh_band && up.dot(P.x[i]) > surface_top_ - band_depth * P.spacing
+                             ? config_.surface_remesh_alpha_s
+                             : config_.alpha_s;
+    rhs_[i] =
+        rho0 / dt * divergence(nb_, op_, u_star_, i) + alpha * rho0 * density_error / (dt * dt);
   }
   if (!decomposition_) exchange(rhs_);  // the net source is a sum over every row
   remove_net_source(P, rhs_, decomposed_share());

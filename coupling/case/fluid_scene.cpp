@@ -49,6 +49,9 @@ std::vector<std::string> fluid_scene_keys() {
           "solver.surface_divergence",
           "solver.surface_scan",
           "solver.surface_refill",
+          "solver.surface_remesh_rows",
+          "solver.surface_remesh_every",
+          "solver.surface_remesh_alpha_s",
           "solver.smagorinsky",
           "solver.smagorinsky_constant",
           "inflow.min",
@@ -263,6 +266,17 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c, int part, int parts) {
   cfg.surface.divergence = c.positive("solver.surface_divergence", Dim == 2 ? 1.5 : 2.4);
   cfg.surface.scan = c.boolean("solver.surface_scan", cfg.surface.scan);
   cfg.surface_refill = c.boolean("solver.surface_refill", cfg.surface_refill);
+  cfg.surface_remesh_rows =
+      static_cast<int>(c.integer("solver.surface_remesh_rows", cfg.surface_remesh_rows));
+  cfg.surface_remesh_every =
+      static_cast<int>(c.integer("solver.surface_remesh_every", cfg.surface_remesh_every));
+  cfg.surface_remesh_alpha_s = c.number("solver.surface_remesh_alpha_s", 0.0);
+  if (cfg.surface_remesh_alpha_s < 0.0)
+    throw CaseError("'solver.surface_remesh_alpha_s' must be >= 0 (0: solver.alpha_s there too)");
+  if (cfg.surface_remesh_rows < 0 || cfg.surface_remesh_every < 1)
+    throw CaseError(
+        "'solver.surface_remesh_rows' must be >= 0 (0: off) and 'solver.surface_remesh_every' "
+        ">= 1 (steps between remeshes)");
   cfg.smagorinsky = c.boolean("solver.smagorinsky", cfg.smagorinsky);
   cfg.smagorinsky_constant = c.positive("solver.smagorinsky_constant", cfg.smagorinsky_constant);
 
