@@ -103,6 +103,17 @@ TEST(BadInput, NegativeInflowRamp) {
   EXPECT_NE(r.output.find("'inflow.ramp' must be >= 0"), std::string::npos);
 }
 
+TEST(BadInput, SurfaceRemeshNeedsAFreeSurfaceUnderGravity) {
+  const Result r = run_bad_case(
+      "surface_remesh",
+      with(kGoodCase, "free_surface = false", "free_surface = false\nsurface_remesh_rows = 4"));
+  EXPECT_NE(r.output.find("solver.surface_remesh_rows needs a free surface under gravity"),
+            std::string::npos);
+  const Result n = run_bad_case(
+      "surface_remesh_rows", with(kGoodCase, "free_surface = false", "surface_remesh_rows = -1"));
+  EXPECT_NE(n.output.find("'solver.surface_remesh_rows' must be >= 0"), std::string::npos);
+}
+
 TEST(BadInput, InflowStartWithoutForcingZone) {
   const Result r = run_bad_case(
       "inflow_start", with(kGoodCase, "velocity = \"taylor_green\"", "velocity = \"inflow\""));

@@ -8,7 +8,9 @@
 //
 // CIRCULATION_TANK_END is the simulated time: 0.3 s in the default suite (steady flux is reached
 // within a few hundredths of a second: the fluid is incompressible), the 10 s in the slow
-// variant. Both at the case's dx = 1 mm and dt = 1e-4 s.
+// variant. Both at the case's dx = 1 mm and dt = 1e-4 s. The free surface survives the upwelling
+// through the case's surface remesh (sph/surface_remesh.hpp); without it the 10 s run broke up
+// at 1.26 s, and FastUpwellingKeepsItsSurface, the default suite's reproducer, at 0.45 s.
 //
 // The same tank closed at the water line (closed.toml: a rigid lid, no free surface) has no
 // Dirichlet row, so one pinned particle fixes the pressure level; it ran away from that corner at
@@ -157,9 +159,9 @@ TEST(CirculationTank, StaysStableAndNothingEscapes) {
 }
 
 // The seed's faster upwelling, 2 cm/s, for 1 s (the pump ramped in over 0.5 s): the quickest
-// reproducer of the free surface's break-up over the upwelling (docs/fluid.md). Today the top
-// layer breaks at 0.45 s (0.5 m/s at 0.49 s) and a particle leaves the domain at 0.59 s; the
-// 0.5 cm/s tank breaks at 1.33 s.
+// reproducer of the free surface's break-up over the upwelling (docs/fluid.md). Without the
+// surface remesh the top layer broke at 0.45 s (0.5 m/s at 0.49 s) and a particle left the domain
+// at 0.59 s; with the remesh but alpha_s at its default 0.001, at 0.27 s.
 TEST(CirculationTank, FastUpwellingKeepsItsSurface) {
   const TankResult r = run_tank("case.toml", 1.0, {"inflow.velocity=0.02"});
   expect_surface_survives(r, 1.0);
