@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "format_number.hpp"
 #include "pocket_fluid.hpp"
@@ -41,10 +40,7 @@ IsphSolver<Dim>::IsphSolver(const IsphConfig<Dim>& config, const Domain<Dim>& do
       throw SimulationError("solver.surface_remesh_every must be at least 1 step");
     const Vec<Dim> up = -config.gravity.normalized();
     surface_columns_ = surface_columns(particles_, up);
-    surface_top_ = -std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < particles_.size(); ++i)
-      if (particles_.kind[i] == kFluid)
-        surface_top_ = std::max(surface_top_, up.dot(particles_.x[i]));
+    surface_top_ = highest_fluid(particles_, up);
   }
 }
 

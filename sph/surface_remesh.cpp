@@ -1,16 +1,23 @@
 #include "surface_remesh.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 
 namespace isph {
 
 template <int Dim>
+double highest_fluid(const Particles<Dim>& particles, const Vec<Dim>& up) {
+  double top = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < particles.size(); ++i)
+    if (particles.kind[i] == kFluid) top = std::max(top, up.dot(particles.x[i]));
+  return top;
+}
+
+template <int Dim>
 std::vector<Vec<Dim>> surface_columns(const Particles<Dim>& particles, const Vec<Dim>& up) {
   const auto& P = particles;
-  double top = -std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < P.size(); ++i)
-    if (P.kind[i] == kFluid) top = std::max(top, up.dot(P.x[i]));
+  const double top = highest_fluid(P, up);
   std::vector<Vec<Dim>> columns;
   for (std::size_t i = 0; i < P.size(); ++i)
     if (P.kind[i] == kFluid && up.dot(P.x[i]) > top - 0.5 * P.spacing)
@@ -89,6 +96,8 @@ double remesh_surface_rows(Particles<Dim>& particles, const Kernel<Dim>& kernel,
   return top;
 }
 
+template double highest_fluid<2>(const Particles<2>&, const Vec<2>&);
+template double highest_fluid<3>(const Particles<3>&, const Vec<3>&);
 template std::vector<Vec<2>> surface_columns<2>(const Particles<2>&, const Vec<2>&);
 template std::vector<Vec<3>> surface_columns<3>(const Particles<3>&, const Vec<3>&);
 template double remesh_surface_rows<2>(Particles<2>&, const Kernel<2>&, const Vec<2>&,

@@ -16,6 +16,10 @@
 
 namespace isph {
 
+// The largest height along `up` of a fluid particle (-infinity without fluid).
+template <int Dim>
+double highest_fluid(const Particles<Dim>& particles, const Vec<Dim>& up);
+
 // The tangential positions (along the surface, height along `up` taken out) of the fluid
 // particles within half a spacing of the highest one: the columns of the surface's lattice.
 template <int Dim>
