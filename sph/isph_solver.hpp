@@ -201,8 +201,9 @@ class IsphSolver {
 
  private:
   // The stages of step(), in order, each in the file named.
-  void find_neighbors();            // step_neighbors.cpp
-  void detect_free_surface();       // step_free_surface.cpp
+  void find_neighbors();       // step_neighbors.cpp
+  void detect_free_surface();  // step_free_surface.cpp
+  void confine_surface_to_remeshed_rows();
   void compute_operator_weights();  // step_neighbors.cpp
   void compute_wall_ghosts();       // step_predictor.cpp
   void compute_eddy_viscosity();
