@@ -1,16 +1,18 @@
 // The seed's circulation tank without soil (examples/circulation_tank_2d): water is forced upward
 // at v_in in a zone between the two inner walls and circulates back down outside them. At steady
 // state the upward flux through the window above the forcing zone (where the soil layer will sit)
-// must equal the forced flux v_in * 28 mm within 3%, no particle may leave the tank and no value
-// may become NaN (the solver throws on both, which fails the test with its message). The flux
-// read +4.2% while the forcing zone's predictor left out gravity (the column above the zone was
-// projected to v_in + dt g); +0.96% since.
+// must equal the forced flux v_in * 28 mm (within 1% over 10 s, 3% over the default 0.3 s), no
+// particle may leave the tank and no value may become NaN (the solver throws on both, which fails
+// the test with its message). The flux read +4.2% while the forcing zone's predictor left out
+// gravity (the column above the zone was projected to v_in + dt g); +0.96% since.
 //
 // CIRCULATION_TANK_END is the simulated time: 0.3 s in the default suite (steady flux is reached
 // within a few hundredths of a second: the fluid is incompressible), the 10 s in the slow
 // variant. Both at the case's dx = 1 mm and dt = 1e-4 s. The free surface survives the upwelling
 // through the case's surface remesh (sph/surface_remesh.hpp); without it the 10 s run broke up
-// at 1.26 s, and FastUpwellingKeepsItsSurface, the default suite's reproducer, at 0.45 s.
+// at 1.26 s, and FastUpwellingKeepsItsSurface, the default suite's reproducer, at 0.45 s. With
+// the remesh but surface marks allowed anywhere, the 10 s run burst at 6.7 s: a void in the
+// separating flow behind an inner wall's top corner read as surface 10 mm under the water.
 //
 // The same tank closed at the water line (closed.toml: a rigid lid, no free surface) has no
 // Dirichlet row, so one pinned particle fixes the pressure level; it ran away from that corner at
@@ -167,10 +169,12 @@ TEST(CirculationTank, FastUpwellingKeepsItsSurface) {
   expect_surface_survives(r, 1.0);
 }
 
+// The 1% over the 10 s run's second half; 3% over the short run's, which starts the pump at
+// once and whose second half (0.15-0.3 s) still carries some of the start.
 TEST(CirculationTank, WindowFluxEqualsForcedFlux) {
   const auto& r = tank();
   ASSERT_TRUE(r.failure.empty()) << r.failure;
-  EXPECT_LT(std::abs(r.flux - r.forced) / r.forced, 0.03);
+  EXPECT_LT(std::abs(r.flux - r.forced) / r.forced, CIRCULATION_TANK_END >= 1.0 ? 0.01 : 0.03);
 }
 
 TEST(CirculationTank, ClosedTankStaysQuietAndCarriesTheForcedFlux) {
