@@ -12,6 +12,7 @@
 
 #include "case_path.hpp"
 #include "run/fluid_run.hpp"
+#include "surface_remesh.hpp"
 
 namespace isphdem::validation {
 namespace {
@@ -163,9 +164,7 @@ int deep_surface_marks(int remesh_rows) {
   FluidRun<2> run(std::move(scene), parse_run_settings(c));
   run.advance();
   const auto& Q = run.solver().particles();
-  double top = -1e9;
-  for (std::size_t i = 0; i < Q.size(); ++i)
-    if (Q.kind[i] == isph::kFluid) top = std::max(top, Q.x[i][1]);
+  const double top = isph::highest_fluid(Q, isph::Vec<2>(0.0, 1.0));
   int deep = 0;
   for (std::size_t i = 0; i < Q.size(); ++i)
     if (Q.surface[i] && Q.x[i][1] < top - 1.5 * Q.spacing) ++deep;
