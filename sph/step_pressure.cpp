@@ -22,6 +22,11 @@ namespace {
 // 89.1 per step; the closed erosion tank, ilu0, 35.3 against 32.3), 1% of that tank's wall time.
 constexpr int kUnitResponseEvery = 10;
 
+// A full-support particle whose number density is 10% under n0 is taken to sit at a void's rim.
+// The value is the one the semi-resolved 2 cm/s free-surface run was carried through 10 s with
+// (docs/internal_erosion.md); it was not tuned further.
+constexpr double kVoidDensityError = 0.1;
+
 }  // namespace
 
 template <int Dim>
@@ -41,8 +46,11 @@ void IsphSolver<Dim>::compute_pressure_rhs(double dt) {
     // source would only push the fluid around the zone.
     const double density_error =
         full_support_[i] && P.kind[i] != kForcing ? 1.0 - number_density_[i] / n0_ : 0.0;
-    // Under a remeshed surface: the band whose fluid has to follow the rows held flat.
-    const double alpha = remesh_band && up.dot(P.x[i]) > surface_top_ - band_depth * P.spacing
+    // Under a remeshed surface: the band whose fluid has to follow the rows held flat, and any void
+    // deeper down. Surface marks are confined to the remeshed rows there, so a void a body leaves
+    // deep in the water gets no p = 0 rim; only this stronger density term refills it.
+    const bool in_band = up.dot(P.x[i]) > surface_top_ - band_depth * P.spacing;
+    const double alpha = remesh_band && (in_band || density_error > kVoidDensityError)
                              ? config_.surface_remesh_alpha_s
                              : config_.alpha_s;
     rhs_[i] =
