@@ -85,7 +85,8 @@ struct IsphConfig {
   int surface_remesh_every = 50;
   // alpha_s in the band from the remeshed top row down to rows + 4 spacings under it, where the
   // fluid has to follow the rows held flat, and at any void deeper down (number density 10% under
-  // n0), which no p = 0 rim closes under the remesh; 0: alpha_s there too.
+  // n0, no PMS particle in the support), which no p = 0 rim closes under the remesh; 0: alpha_s
+  // there too.
   double surface_remesh_alpha_s = 0.0;
   // Smagorinsky eddy viscosity nu_T = (C_s dx)^2 sqrt(2 S:S), added to nu in the viscous term.
   bool smagorinsky = false;
