@@ -141,6 +141,22 @@ TEST(Hydrostatic, ThreeDimensionalTankStaysHydrostatic) {
 namespace isphdem::validation {
 namespace {
 
+// The 20 x 20 hydrostatic tank at spacing 0.01 with the 2 x 2 fluid particles around (0.1, 0.1),
+// 10 rows under the surface, taken out.
+const isph::Vec<2> kCavityCentre(0.1, 0.1);
+
+FluidScene<2> with_cavity(FluidScene<2> scene) {
+  isph::Particles<2> kept;
+  kept.spacing = scene.particles.spacing;
+  kept.volume = scene.particles.volume;
+  const auto& P = scene.particles;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.kind[i] != isph::kFluid || (P.x[i] - kCavityCentre).cwiseAbs().maxCoeff() > 0.01)
+      kept.add(P.x[i], P.v[i], P.kind[i]);
+  scene.particles = kept;
+  return scene;
+}
+
 // Under the surface remesh the free surface is the remeshed top row, and nothing deeper is open
 // to the air (IsphSolver::confine_surface_to_remeshed_rows). A submerged cavity of 2 x 2 missing
 // particles reads as surface by its rim's number density; in the semi-resolved erosion run such
@@ -150,18 +166,7 @@ int deep_surface_marks(int remesh_rows) {
   const CaseFile c =
       load_example("hydrostatic_2d", {"particles.spacing=0.01", "time.end=0.01",
                                       "solver.surface_remesh_rows=" + std::to_string(remesh_rows)});
-  FluidScene<2> scene = build_fluid_scene<2>(c);
-  isph::Particles<2> kept;
-  kept.spacing = scene.particles.spacing;
-  kept.volume = scene.particles.volume;
-  const auto& P = scene.particles;
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    const bool cavity = P.kind[i] == isph::kFluid && std::abs(P.x[i][0] - 0.1) < 0.01 &&
-                        std::abs(P.x[i][1] - 0.1) < 0.01;
-    if (!cavity) kept.add(P.x[i], P.v[i], P.kind[i]);
-  }
-  scene.particles = kept;
-  FluidRun<2> run(std::move(scene), parse_run_settings(c));
+  FluidRun<2> run(with_cavity(build_fluid_scene<2>(c)), parse_run_settings(c));
   run.advance();
   const auto& Q = run.solver().particles();
   const double top = isph::highest_fluid(Q, isph::Vec<2>(0.0, 1.0));
@@ -194,19 +199,10 @@ double cavity_gap_after(int steps, const std::string& band_alpha) {
   const CaseFile c = load_example(
       "hydrostatic_2d", {"particles.spacing=0.01", "time.end=1.0", "solver.surface_remesh_rows=4",
                          "solver.surface_remesh_alpha_s=" + band_alpha});
-  FluidScene<2> scene = build_fluid_scene<2>(c);
-  const isph::Vec<2> centre(0.1, 0.1);
-  isph::Particles<2> kept;
-  kept.spacing = scene.particles.spacing;
-  kept.volume = scene.particles.volume;
-  const auto& P = scene.particles;
-  for (std::size_t i = 0; i < P.size(); ++i)
-    if (P.kind[i] != isph::kFluid || (P.x[i] - centre).cwiseAbs().maxCoeff() > 0.01)
-      kept.add(P.x[i], P.v[i], P.kind[i]);
-  scene.particles = kept;
-  FluidRun<2> run(std::move(scene), parse_run_settings(c));
+  FluidRun<2> run(with_cavity(build_fluid_scene<2>(c)), parse_run_settings(c));
   for (int k = 0; k < steps; ++k) run.advance();
   const auto& Q = run.solver().particles();
+  const isph::Vec<2> centre = kCavityCentre;
   double gap = 1e9;
   for (std::size_t i = 0; i < Q.size(); ++i)
     if (Q.kind[i] == isph::kFluid) gap = std::min(gap, (Q.x[i] - centre).norm());
