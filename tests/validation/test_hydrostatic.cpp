@@ -193,8 +193,9 @@ namespace {
 // A void deep under a remeshed surface has no p = 0 rim (above), so only the density-invariance
 // term closes it; the semi-resolved 2 cm/s erosion run broke at 7.55 s at a void a clump had left
 // (docs/internal_erosion.md). Under the remesh that term takes surface_remesh_alpha_s at any
-// particle 10% short of n0. Returns the distance from the cavity's centre to the nearest fluid
-// particle after `steps` steps, in spacings (1.58 for the 2 x 2 cavity as cut).
+// particle 10% short of n0 with no PMS particle in its support. Returns the distance from the
+// cavity's centre to the nearest fluid particle after `steps` steps, in spacings (1.58 for the 2 x
+// 2 cavity as cut).
 double cavity_gap_after(int steps, const std::string& band_alpha) {
   const CaseFile c = load_example(
       "hydrostatic_2d", {"particles.spacing=0.01", "time.end=1.0", "solver.surface_remesh_rows=4",
