@@ -40,18 +40,19 @@ inline int count(const std::string& text, const std::string& what) {
   return n;
 }
 
-// The first number (digits and points) in `text` that follows `before` and is followed by
-// `after`; empty if there is none. (std::regex trips GCC 12's -Wmaybe-uninitialized in the
-// sanitized build.)
-inline std::string number_between(const std::string& text, const std::string& before,
-                                  const std::string& after) {
+// Every run of `chars` in `text` that follows `before` and is followed by `after`, in order of
+// appearance (std::regex draws -Wmaybe-uninitialized from libstdc++ in the sanitized build).
+inline std::vector<std::string> spans_between(const std::string& text, const std::string& before,
+                                              const std::string& after,
+                                              const char* chars = "0123456789.") {
+  std::vector<std::string> found;
   for (auto at = text.find(before); at != std::string::npos; at = text.find(before, at + 1)) {
     const auto from = at + before.size();
-    const auto to = text.find_first_not_of("0123456789.", from);
+    const auto to = text.find_first_not_of(chars, from);
     if (to != from && to != std::string::npos && text.compare(to, after.size(), after) == 0)
-      return text.substr(from, to - from);
+      found.push_back(text.substr(from, to - from));
   }
-  return {};
+  return found;
 }
 
 inline std::string isphdem() { return std::string(ISPHDEM_BINARY_DIR) + "/coupling/isphdem"; }

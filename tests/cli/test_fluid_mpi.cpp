@@ -86,11 +86,11 @@ TEST(FluidMpi, UnstableRunStopsEveryRankWithOneMessage) {
   EXPECT_EQ(count(r.output, "beyond the CFL limit"), 1);
   EXPECT_EQ(count(r.output, "complete and valid"), 1);
   // The particle named is the fastest of all ranks (decomposed, each rank knows its own).
-  const std::string quoted = number_between(r.output, "max |u| = ", " m/s");
-  const std::string named = number_between(r.output, "m (", " m/s)");
+  const auto quoted = spans_between(r.output, "max |u| = ", " m/s");
+  const auto named = spans_between(r.output, "m (", " m/s)");
   ASSERT_FALSE(quoted.empty());
   ASSERT_FALSE(named.empty());
-  EXPECT_EQ(quoted, named);
+  EXPECT_EQ(quoted.front(), named.front());
   int snaps = 0;
   for (const auto& e : std::filesystem::directory_iterator(dir / "out")) {
     if (e.path().filename().string().rfind("snap_", 0) != 0) continue;

@@ -5,7 +5,6 @@
 // case runs the real binary on a broken copy of a shipped example.
 #include <gtest/gtest.h>
 
-#include <cctype>
 #include <fstream>
 #include <iterator>
 #include <set>
@@ -51,15 +50,9 @@ void expect_valid_snapshots(const fs::path& out, int at_least) {
   }
   EXPECT_GE(static_cast<int>(on_disk.size()), at_least);
   const std::string xdmf = read_file(out / "fluid.xdmf");
-  std::set<std::string> named;
-  // Every "snap_<digits>.h5" the XDMF names (std::regex drew -Wmaybe-uninitialized from
-  // libstdc++ in the sanitizer build).
-  for (auto at = xdmf.find("snap_"); at != std::string::npos; at = xdmf.find("snap_", at + 1)) {
-    auto end = at + 5;
-    while (end < xdmf.size() && std::isdigit(static_cast<unsigned char>(xdmf[end]))) ++end;
-    if (end > at + 5 && xdmf.compare(end, 3, ".h5") == 0)
-      named.insert(xdmf.substr(at, end + 3 - at));
-  }
+  std::set<std::string> named;  // every "snap_<digits>.h5" the XDMF names
+  for (const auto& step : spans_between(xdmf, "snap_", ".h5", "0123456789"))
+    named.insert("snap_" + step + ".h5");
   EXPECT_EQ(named, on_disk);
   std::printf("%zu snapshots written before the error, all readable and in fluid.xdmf\n",
               on_disk.size());
