@@ -98,6 +98,18 @@ struct IsphConfig {
   // Fluid particles whose support is more than this share PMS solid follow the solids
   // (sph/pocket_fluid.hpp); 1 turns it off.
   double pocket_solid_fraction = 0.5;
+  // PMS rows in the projection (sph/rigid_solids.hpp). true: u* = v + dt c grad p^n / rho, so
+  // that the body moves rigidly through the projection while the pressure is steady and only
+  // its change per step moves it (the pressure-increment form, as for the forcing zone). false:
+  // the fluid predictor's u* = v + dt (nu lap u + g), with which the projection let the body's
+  // rows move as fluid by dt (g - grad p / rho) a step: the body leaked like a porous block of
+  // resistance 1/dt (a square array of cylinders carried 5.6% more flow at the viscous step
+  // than at 1/16 of it; docs/resolved.md, "Time step").
+  bool pms_pressure_increment = true;
+  // Density-invariance relaxation time [s]: when positive, alpha_s = dt / tau in the PPE, so
+  // that a density error relaxes at the rate 1/tau whatever the step (alpha_s / dt^2 in the PPE
+  // is a rate of alpha_s / dt). 0: alpha_s as given. docs/fluid.md, "Time step".
+  double density_relaxation_time = 0.0;
   std::vector<ForcingZone<Dim>> forcing;
   ShiftingParams shifting;
   TimeStepParams time_step;
@@ -272,6 +284,7 @@ class IsphSolver {
   std::vector<Vec<Dim>> grad_p_;       // decomposed: the owned rows' grad p of the last step
   double max_eddy_viscosity_ = 0.0;
   std::vector<Vec<Dim>> u_star_, wall_ghost_, shift_;
+  std::vector<Vec<Dim>> pms_u_star_;       // PMS rows: the plain predictor's u*, for their force
   std::vector<Vec<Dim>> surface_columns_;  // the lattice surface_remesh_rows remeshes onto
   double surface_top_ = 0.0;               // height of the remeshed top row along -gravity
   std::vector<uint8_t> operator_mode_, full_support_, shift_mode_, dry_wall_;

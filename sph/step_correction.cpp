@@ -26,7 +26,8 @@ void IsphSolver<Dim>::correct(double dt) {
       continue;
     }
     if (P.kind[i] == kSolid) {  // PMS: the fluid's momentum change goes to the body
-      P.solid_force[i] = pms_force(P, nb_, op_, i, rho0, dt, u_star_[i], config_.gravity);
+      const Vec<Dim>& u_star = config_.pms_pressure_increment ? pms_u_star_[i] : u_star_[i];
+      P.solid_force[i] = pms_force(P, nb_, op_, i, rho0, dt, u_star, config_.gravity);
       continue;
     }
     P.v[i] = u_star_[i] - dt * porous_.pressure_coefficient(i) / rho0 * gradient(nb_, op_, P.p, i);

@@ -137,6 +137,23 @@ void IsphSolver<Dim>::predict(double dt) {
     u_star_[i] = P.v[i] + dt * ((nu + eddy_viscosity_[i]) * laplacian(nb_, op_, wall_ghost_, i) +
                                 config_.gravity);
   }
+  if (config_.pms_pressure_increment && has_solids()) {
+    // A PMS body is rigid and moved by the DEM, not by this projection: its rows predict the
+    // velocity they keep under last step's pressure, so that only the pressure's change per step
+    // moves them (rigid while the flow is steady). With the fluid's u* the projection moved the
+    // body's rows by dt (g + nu lap u - grad p / rho), a leak through the body of the order of
+    // dt times the pressure gradient, which the next step's reset to the rigid velocity undid.
+    // Their force (pms_force) keeps the fluid predictor's u*: its nu lap u is the viscous load.
+    // The first step takes the hydrostatic gradient, rho g.
+    pms_u_star_ = u_star_;
+#pragma omp parallel for schedule(static)
+    for (int i = first_; i < last_; ++i) {
+      if (P.kind[i] != kSolid || P.surface[i] == kDrySolid) continue;
+      const Vec<Dim> a =
+          steps_ > 0 ? Vec<Dim>(gradient(nb_, op_, P.p, i) / config_.density) : config_.gravity;
+      u_star_[i] = P.v[i] + dt * porous_.pressure_coefficient(i) * a;
+    }
+  }
   exchange(u_star_);  // the walls' u* below and the divergence read the fluid's
 }
 

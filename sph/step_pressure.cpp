@@ -42,6 +42,11 @@ void IsphSolver<Dim>::compute_pressure_rhs(double dt) {
   const double band_depth = config_.surface_remesh_rows + 4;
   const Vec<Dim> up = remesh_band ? Vec<Dim>(-config_.gravity.normalized()) : Vec<Dim>::Zero();
   const bool solids = remesh_band && has_solids();
+  // alpha_s / dt^2 in the PPE relaxes a density error at the rate alpha_s / dt: a relaxation time
+  // keeps that rate whatever the step.
+  const double alpha_s = config_.density_relaxation_time > 0.0
+                             ? dt / config_.density_relaxation_time
+                             : config_.alpha_s;
 #pragma omp parallel for schedule(static)
   for (int i = first_; i < last_; ++i) {
     if (P.kind[i] == kWall) continue;
@@ -57,7 +62,7 @@ void IsphSolver<Dim>::compute_pressure_rhs(double dt) {
     const bool void_rim =
         density_error > kVoidDensityError && (!solids || solid_share(P, nb_, i) == 0.0);
     const double alpha =
-        remesh_band && (in_band || void_rim) ? config_.surface_remesh_alpha_s : config_.alpha_s;
+        remesh_band && (in_band || void_rim) ? config_.surface_remesh_alpha_s : alpha_s;
     rhs_[i] =
         rho0 / dt * divergence(nb_, op_, u_star_, i) + alpha * rho0 * density_error / (dt * dt);
   }

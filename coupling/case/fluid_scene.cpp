@@ -34,6 +34,8 @@ std::vector<std::string> fluid_scene_keys() {
           "solver.alpha_s",
           "solver.min_wall_distance",
           "solver.pocket_solid_fraction",
+          "solver.pms_projection",
+          "solver.density_relaxation_time",
           "solver.free_surface",
           "solver.spread_pin",
           "solver.surface_threshold",
@@ -248,6 +250,17 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c, int part, int parts) {
   cfg.alpha_s = c.number("solver.alpha_s", cfg.alpha_s);
   cfg.min_wall_distance = c.number("solver.min_wall_distance", cfg.min_wall_distance);
   cfg.pocket_solid_fraction = c.number("solver.pocket_solid_fraction", cfg.pocket_solid_fraction);
+  const std::string pms_projection = c.string("solver.pms_projection", "increment");
+  if (pms_projection != "increment" && pms_projection != "fluid")
+    throw CaseError(
+        "'solver.pms_projection' must be \"increment\" (PMS rows keep the rigid "
+        "velocity through a steady projection) or \"fluid\" (they are projected as "
+        "fluid, the code before 2026-12-06)");
+  cfg.pms_pressure_increment = pms_projection == "increment";
+  cfg.density_relaxation_time =
+      c.number("solver.density_relaxation_time", cfg.density_relaxation_time);
+  if (cfg.density_relaxation_time < 0.0)
+    throw CaseError("'solver.density_relaxation_time' must be >= 0 s (0: solver.alpha_s per step)");
   if (!(cfg.pocket_solid_fraction > 0.0))
     throw CaseError(
         "'solver.pocket_solid_fraction' must be positive (a solid share of the kernel support; "
