@@ -1,6 +1,7 @@
 #include "case/case_file.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -54,6 +55,29 @@ void collect_keys(const toml::table& t, const std::string& prefix,
     } else {
       out.emplace_back(path, &v);
     }
+  }
+}
+
+// TOML reads nan, inf and -inf as numbers. Refused here, for every key at once (scalars, array
+// elements, entries of arrays of tables, free-form tables such as dem.variables): a NaN viscosity
+// or corner would only show later, as a failed pressure solve or a misplaced particle, and under
+// another table's name. PATH names the node: "fluid.gravity[1]", "walls.blocks[0].min[0]".
+void refuse_non_finite(const toml::node& n, const std::string& path) {
+  if (const auto* t = n.as_table()) {
+    for (const auto& [k, v] : *t)
+      refuse_non_finite(v, path.empty() ? std::string(k.str()) : path + "." + std::string(k.str()));
+  } else if (const auto* a = n.as_array()) {
+    for (std::size_t i = 0; i < a->size(); ++i)
+      refuse_non_finite(*a->get(i), path + "[" + std::to_string(i) + "]");
+  } else if (const auto* f = n.as_floating_point()) {
+    const double x = f->get();
+    if (std::isfinite(x)) return;
+    const std::string what = path + " = " + (std::isnan(x) ? "nan" : x > 0 ? "inf" : "-inf");
+    const std::string fix = " is not a finite number; give a number such as 1e-6";
+    const auto& s = n.source();
+    if (!s.path || s.begin.line == 0) throw CaseError(what + " (from --set)" + fix);
+    throw CaseError(fs::path(*s.path).filename().string() + ":" + std::to_string(s.begin.line) +
+                    ": " + what + fix);
   }
 }
 
@@ -133,12 +157,14 @@ CaseFile CaseFile::load(const fs::path& path, const std::vector<std::string>& ov
     throw CaseError("unknown key '" + k + "' (" + source_line(*node) + "); did you mean '" +
                     closest(k, known_keys) + "'?");
   }
+  refuse_non_finite(c.table_, "");
   return c;
 }
 
 CaseFile CaseFile::with_override(const std::string& assignment) const {
   CaseFile c = *this;
   apply_override(c.table_, assignment);
+  refuse_non_finite(c.table_, "");
   return c;
 }
 

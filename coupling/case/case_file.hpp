@@ -21,7 +21,8 @@ class CaseFile {
  public:
   // Parses `path`, applies overrides ("dotted.key=value"; the value is TOML, or a bare string),
   // then checks every key against `known_keys` (dotted paths; elements of arrays of tables are
-  // written without an index, e.g. "fluid.blocks.min").
+  // written without an index, e.g. "fluid.blocks.min") and refuses any number that is nan or
+  // +-inf (TOML admits them), naming its key and line, or --set.
   static CaseFile load(const std::filesystem::path& path, const std::vector<std::string>& overrides,
                        const std::vector<std::string>& known_keys);
 

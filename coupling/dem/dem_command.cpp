@@ -48,6 +48,7 @@ int dem_main(int argc, char** argv) {
 
   auto lmp = open_liggghts(args, MPI_COMM_WORLD);
   set_liggghts_context(lmp, "script " + script);
+  const LiggghtsStdoutToScreen to_screen(lmp);
   lmp->input->file();  // reads the -in script, as the stock launcher does
   return 0;
 }

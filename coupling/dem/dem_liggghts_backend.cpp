@@ -104,7 +104,10 @@ void LiggghtsBackend::initialize(const DemSetup& setup) {
                              "': no such readable file");
   lmp_ = open_liggghts(args_, comm_);
   set_liggghts_context(lmp_, "script " + setup.script.string());
-  if (!setup.script.empty()) lmp_->input->file(setup.script.string().c_str());
+  if (!setup.script.empty()) {
+    const LiggghtsStdoutToScreen to_screen(lmp_);
+    lmp_->input->file(setup.script.string().c_str());
+  }
   set_liggghts_context(lmp_, "a command isphdem gave after the script");
   for (const auto& c : setup.commands) command(c);
   set_liggghts_context(lmp_, "the DEM substeps of a fluid step");
@@ -114,7 +117,10 @@ void LiggghtsBackend::initialize(const DemSetup& setup) {
 }
 
 void LiggghtsBackend::command(const std::string& line) {
-  lmp_->input->one(line.c_str());
+  {
+    const LiggghtsStdoutToScreen to_screen(lmp_);
+    lmp_->input->one(line.c_str());
+  }
   state_stale_ = true;
   if (line.rfind("run ", 0) == 0) ran_ = true;
 }

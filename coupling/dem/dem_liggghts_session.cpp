@@ -31,4 +31,12 @@ void set_liggghts_context(LammpsHandle& lmp, std::string where) {
   if (lmp.get_deleter().tee) lmp.get_deleter().tee->set_context(std::move(where));
 }
 
+LiggghtsStdoutToScreen::LiggghtsStdoutToScreen(LammpsHandle& lmp) : tee_(lmp.get_deleter().tee) {
+  previous_ = tee_ ? tee_->capture_stdout() : stdout;
+}
+
+LiggghtsStdoutToScreen::~LiggghtsStdoutToScreen() {
+  if (tee_) tee_->release_stdout(previous_);
+}
+
 }  // namespace isphdem

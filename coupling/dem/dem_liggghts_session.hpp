@@ -6,6 +6,7 @@
 
 #include <mpi.h>
 
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,6 +34,21 @@ LammpsHandle open_liggghts(const std::vector<std::string>& args, MPI_Comm comm);
 
 // Where the next LIGGGHTS commands come from, named in an error message ("script in.liggghts").
 void set_liggghts_context(LammpsHandle& lmp, std::string where);
+
+// Put around every call that runs LIGGGHTS commands: while it lives, what LIGGGHTS prints with a
+// bare printf goes to its screen stream, not to isphdem's stdout
+// (LiggghtsOutputTee::capture_stdout).
+class LiggghtsStdoutToScreen {
+ public:
+  explicit LiggghtsStdoutToScreen(LammpsHandle& lmp);
+  ~LiggghtsStdoutToScreen();
+  LiggghtsStdoutToScreen(const LiggghtsStdoutToScreen&) = delete;
+  LiggghtsStdoutToScreen& operator=(const LiggghtsStdoutToScreen&) = delete;
+
+ private:
+  std::shared_ptr<LiggghtsOutputTee> tee_;
+  FILE* previous_ = nullptr;
+};
 
 }  // namespace isphdem
 

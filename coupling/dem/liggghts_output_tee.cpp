@@ -39,7 +39,8 @@ std::string error_suffix(std::string_view s) {
 
 }  // namespace
 
-LiggghtsOutputTee::LiggghtsOutputTee(LAMMPS_NS::LAMMPS* lmp, int rank) : lmp_(lmp), rank_(rank) {
+LiggghtsOutputTee::LiggghtsOutputTee(LAMMPS_NS::LAMMPS* lmp, int rank)
+    : lmp_(lmp), rank_(rank), host_stdout_(stdout) {
   install(screen_, lmp_->screen, lmp_->universe->uscreen, true);
   install(log_, lmp_->logfile, lmp_->universe->ulogfile, false);
 }
@@ -70,6 +71,19 @@ void LiggghtsOutputTee::close() {
     if (s->ours && !s->closed) std::fclose(s->ours);
 }
 
+FILE* LiggghtsOutputTee::capture_stdout() {
+  FILE* previous = stdout;
+  if (!screen_.ours || screen_.closed) return previous;
+  std::fflush(stdout);  // isphdem's own lines first
+  stdout = screen_.ours;
+  return previous;
+}
+
+void LiggghtsOutputTee::release_stdout(FILE* previous) {
+  // A capture nested in one whose screen has closed since gives back isphdem's stdout.
+  stdout = previous == screen_.ours && screen_.closed ? host_stdout_ : previous;
+}
+
 ssize_t LiggghtsOutputTee::write(void* cookie, const char* buf, size_t size) {
   auto& s = *static_cast<Stream*>(cookie);
   const std::string_view text(buf, size);
@@ -92,6 +106,7 @@ ssize_t LiggghtsOutputTee::write(void* cookie, const char* buf, size_t size) {
 int LiggghtsOutputTee::close(void* cookie) {
   auto& s = *static_cast<Stream*>(cookie);
   s.closed = true;
+  if (stdout == s.ours) stdout = s.owner->host_stdout_;  // never a closed stream
   if (s.real) {
     if (s.real == stdout)
       std::fflush(s.real);

@@ -13,7 +13,12 @@
 //     string that is already freed (error_special.h), i.e. stray heap bytes ending in the ERROR's
 //     "(file:line)": that one write is dropped, so the files hold LIGGGHTS's output without it.
 // On ranks other than 0 LIGGGHTS opens no screen; there only ERROR lines are passed on (stderr),
-// so that the message of the failing rank is shown once. Needs glibc (fopencookie).
+// so that the message of the failing rank is shown once.
+// LIGGGHTS 3.8 also writes a few lines with a bare printf, to the process's stdout whatever
+// -screen says: read_restart prints "version 3 8" on every rank. While LIGGGHTS runs commands
+// (capture_stdout), C's stdout is our screen stream, so those lines go where the rest of
+// LIGGGHTS's output goes (the screen file; nowhere on ranks > 0 or with -screen none) and never
+// among isphdem's own lines. Needs glibc (fopencookie; stdout is an assignable variable).
 #ifndef ISPHDEM_LIGGGHTS_OUTPUT_TEE_HPP
 #define ISPHDEM_LIGGGHTS_OUTPUT_TEE_HPP
 
@@ -44,6 +49,11 @@ class LiggghtsOutputTee {
   void host_closing() { host_closing_ = true; }
   // Closes our streams and the files behind them (after lmp is deleted); idempotent.
   void close();
+  // Points C's stdout at the screen stream and returns what it pointed at, for release_stdout.
+  // Nested captures are fine. When LIGGGHTS closes the screen itself (Error::all, just before it
+  // exits) stdout is given back at once.
+  FILE* capture_stdout();
+  void release_stdout(FILE* previous);
 
  private:
   struct Stream {
@@ -62,6 +72,7 @@ class LiggghtsOutputTee {
 
   LAMMPS_NS::LAMMPS* lmp_;
   int rank_;
+  FILE* host_stdout_;  // stdout as isphdem set it up
   bool host_closing_ = false;
   std::string context_;
   Stream screen_, log_;

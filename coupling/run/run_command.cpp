@@ -33,6 +33,7 @@
 #include "run/dem_only_run.hpp"
 #include "run/erosion_diagnostics.hpp"
 #include "run/fluid_run.hpp"
+#include "run/ranks_notice.hpp"
 #include "run/replicated_ranks.hpp"
 #include "run/run_loop.hpp"
 #include "run/run_report.hpp"
@@ -53,6 +54,17 @@ const char* kUsage =
     "  --quiet          no progress line and no summary\n";
 
 using Arguments = VerbArguments;
+
+// The header's line on the ranks (when it talks) and the warning of a replicated fluid (rank 0,
+// on stderr, even with --quiet); flushes the header.
+void say_ranks(const RanksNotice& n, int rank, bool talk) {
+  if (talk && !n.header.empty()) std::printf("  %s\n", n.header.c_str());
+  if (talk) std::fflush(stdout);
+  if (rank == 0 && !n.warning.empty()) {
+    std::fprintf(stderr, "isphdem run: warning: %s\n", n.warning.c_str());
+    std::fflush(stderr);
+  }
+}
 
 // A fluid-only case. On several ranks (mpirun) with solver.preconditioner = "amg" each rank holds
 // and steps its own part of the fluid (FluidRun::decompose), the pressure equation one system
@@ -102,8 +114,9 @@ int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
                   first_dt, l.limiting().c_str(), l.cfl, l.viscous, l.force);
     std::printf("  output: %s every %g s to t = %g s\n", args.out.string().c_str(),
                 settings.output_interval, settings.t_end);
-    std::fflush(stdout);
   }
+  say_ranks(ranks_notice(ranks, decomposed, solver.config().pressure_solver.preconditioner), rank,
+            talk);
 
   const std::vector<std::string> columns{
       "time",           "step",         "wall_seconds",      "ppe_iterations",
@@ -192,8 +205,9 @@ DemCaseConfig dem_config(const CaseFile& c) {
 // grains from rank 0.
 template <int Dim>
 int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report) {
-  int rank = 0;
+  int rank = 0, ranks = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   const bool talk = rank == 0 && !args.quiet;
   const RunSettings settings = [&] {
     RunSettings s = parse_run_settings(given);
@@ -286,6 +300,8 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   check_replicas(P, solver.steps());  // the ranks start from the same fluid
   const long particles = long(P.size());
   const bool decomposed = run.decompose();
+  say_ranks(ranks_notice(ranks, decomposed, solver.config().pressure_solver.preconditioner), rank,
+            talk);
   // Grain density for the mass of ejected fines: that of the clumps when there are any (the
   // DEM state has no per-atom mass).
   double grain_density = std::nan("");

@@ -35,6 +35,11 @@ std::unique_ptr<UnresolvedCoupling<Dim>> make_unresolved_coupling(const CaseFile
         "'unresolved.grain_diameter' is required: the fine grains' diameter d_s [m] "
         "used by the drag law");
   p.grain_diameter = c.positive("unresolved.grain_diameter");
+  // The fluid's key, named as such: the drag law divides by it (the fluid alone takes 0).
+  if (!(viscosity > 0.0))
+    throw CaseError("'fluid.viscosity' (" + c.where("fluid.viscosity") +
+                    ") must be positive in a case with [unresolved], whose drag law divides by "
+                    "it (water: 1e-6)");
   p.kinematic_viscosity = viscosity;
   p.alpha = c.positive("unresolved.alpha", p.alpha);
   p.beta = c.positive("unresolved.beta", p.beta);

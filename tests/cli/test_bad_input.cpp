@@ -2,6 +2,8 @@
 // cause (the key, the file, the line) and the fix, and a non-zero exit code.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "cli_support.hpp"
 
 namespace isphdem::cli {
@@ -182,6 +184,102 @@ TEST(BadInput, CoupledCaseRefusedAfterAMultisphereRestartShowsItsMessage) {
   EXPECT_EQ(r.output.find("use \"auto\""), std::string::npos);
   EXPECT_EQ(r.output.find("Segmentation fault"), std::string::npos);
   EXPECT_EQ(r.output.find("LIGGGHTS stopped the run"), std::string::npos);
+}
+
+// TOML admits nan, inf and -inf as numbers. Every numeric key refuses them when the case is read,
+// naming the key (with the element's index) and its line, or --set: before, a NaN viscosity
+// started the run and stopped it later ("pressure solver failed ... relative residual nan").
+
+// "bad.toml:N: " for the line of TEXT that holds NEEDLE (after the first newline of it).
+std::string bad_toml_line(const std::string& text, const std::string& needle) {
+  const auto at = text.find(needle);
+  EXPECT_NE(at, std::string::npos) << needle;
+  const auto line = 1 + std::count(text.begin(), text.begin() + at, '\n');
+  return "bad.toml:" + std::to_string(line) + ": ";
+}
+
+const char* kNotFinite = " is not a finite number; give a number such as 1e-6";
+
+TEST(BadInput, NanScalarFromSetIsRefusedBeforeAnyStep) {
+  const Result r = run_bad_case("nan_scalar_set", kGoodCase, "--set fluid.viscosity=nan");
+  EXPECT_NE(r.output.find(std::string("fluid.viscosity = nan (from --set)") + kNotFinite),
+            std::string::npos);
+  EXPECT_EQ(r.output.find("pressure solver"), std::string::npos);
+}
+
+TEST(BadInput, NanInAVectorNamesTheElementAndLine) {
+  const std::string text = with(kGoodCase, "gravity = [0.0, 0.0]", "gravity = [0.0, nan]");
+  const Result r = run_bad_case("nan_vector", text);
+  EXPECT_NE(r.output.find(bad_toml_line(text, "gravity =") + "fluid.gravity[1] = nan" + kNotFinite),
+            std::string::npos);
+  const Result s = run_bad_case("nan_vector_set", kGoodCase, "--set 'fluid.gravity=[0, nan]'");
+  EXPECT_NE(s.output.find(std::string("fluid.gravity[1] = nan (from --set)") + kNotFinite),
+            std::string::npos);
+}
+
+TEST(BadInput, NanInATableEntryNamesTheEntry) {
+  // An element of an array of tables, by its index.
+  const std::string block =
+      with(kGoodCase, "[[fluid.blocks]]\nmin = [0.0, 0.0]", "[[fluid.blocks]]\nmin = [nan, 0.0]");
+  const Result b = run_bad_case("nan_fluid_block", block);
+  EXPECT_NE(b.output.find(bad_toml_line(block, "min = [nan") + "fluid.blocks[0].min[0] = nan" +
+                          kNotFinite),
+            std::string::npos);
+  const std::string walls = std::string(kGoodCase) +
+                            "[[walls.blocks]]\nmin = [0.0, 0.0]\nmax = [0.3, 0.3]\n"
+                            "[[walls.blocks]]\nmin = [0.5, nan]\nmax = [0.6, 0.6]\n";
+  const Result w = run_bad_case("nan_walls_block", walls);
+  EXPECT_NE(w.output.find(bad_toml_line(walls, "min = [0.5, nan]") +
+                          "walls.blocks[1].min[1] = nan" + kNotFinite),
+            std::string::npos);
+  // A [[reference.metrics]] number and a free-form table's entry.
+  const std::string metric = std::string(kGoodCase) +
+                             "[[reference.metrics]]\nname = \"speed\"\n"
+                             "value = \"last(max_speed)\"\nexpected = nan\n";
+  const Result m = run_bad_case("nan_reference_metric", metric);
+  EXPECT_NE(m.output.find(bad_toml_line(metric, "expected = nan") +
+                          "reference.metrics[0].expected = nan" + kNotFinite),
+            std::string::npos);
+  const std::string variables = std::string(kGoodCase) +
+                                "[dem]\nscript = \"in.liggghts\"\nsubsteps = 10\n"
+                                "[dem.variables]\nnfines = 32\nd = nan\n";
+  const Result v = run_bad_case("nan_dem_variable", variables);
+  EXPECT_NE(
+      v.output.find(bad_toml_line(variables, "d = nan") + "dem.variables.d = nan" + kNotFinite),
+      std::string::npos);
+}
+
+TEST(BadInput, InfinityIsRefusedToo) {
+  const std::string text = with(kGoodCase, "spacing = 0.05", "spacing = inf");
+  const Result r = run_bad_case("inf_scalar", text);
+  EXPECT_NE(
+      r.output.find(bad_toml_line(text, "spacing = inf") + "particles.spacing = inf" + kNotFinite),
+      std::string::npos);
+  const Result s = run_bad_case("inf_scalar_set", kGoodCase, "--set time.end=-inf");
+  EXPECT_NE(s.output.find(std::string("time.end = -inf (from --set)") + kNotFinite),
+            std::string::npos);
+}
+
+// In a coupled case the fluid's viscosity is named as the fluid's key: it was blamed on
+// [unresolved], whose drag law divides by it ("[unresolved]: drag: kinematic viscosity must be
+// > 0"), whether NaN or 0.
+TEST(BadInput, CoupledCaseNamesTheFluidsViscosity) {
+  const auto dir = scratch("coupled_viscosity");
+  const std::string base = example("settling_grain") + " --out " + (dir / "out").string();
+  const Result nan = run(base + " --set fluid.viscosity=nan");
+  std::printf("%s", nan.output.c_str());
+  EXPECT_EQ(nan.exit_code, 2);
+  EXPECT_NE(nan.output.find(std::string("fluid.viscosity = nan (from --set)") + kNotFinite),
+            std::string::npos);
+  EXPECT_EQ(nan.output.find("[unresolved]:"), std::string::npos);
+  const Result zero = run(base + " --set fluid.viscosity=0.0");
+  std::printf("%s", zero.output.c_str());
+  EXPECT_EQ(zero.exit_code, 2);
+  EXPECT_NE(zero.output.find("'fluid.viscosity' (--set) must be positive in a case with "
+                             "[unresolved]"),
+            std::string::npos);
+  EXPECT_EQ(zero.output.find("[unresolved]:"), std::string::npos);
+  EXPECT_EQ(count_snapshots(dir / "out"), 0);
 }
 
 TEST(BadInput, UnresolvedWithoutDemNamesBothTables) {
