@@ -171,8 +171,8 @@ TEST(BadInput, CoupledCaseNeedsAFixedTimeStep) {
 TEST(BadInput, CoupledCaseRefusedAfterAMultisphereRestartShowsItsMessage) {
   const auto dir = scratch("coupled_refused_after_restart");
   const Result r =
-      run(std::string(ISPHDEM_SOURCE_DIR) + "/examples/internal_erosion_2d/reduced.toml --out " +
-          (dir / "out").string() + " --set time.dt=5e-3 --set dem.substeps=5000");
+      run(reduced_case() + " --out " + (dir / "out").string() +
+          " --set time.dt=5e-3 --set dem.substeps=5000");
   std::printf("%s", r.output.c_str());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("is beyond the stable limit"), std::string::npos);

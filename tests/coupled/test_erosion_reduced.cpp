@@ -44,15 +44,15 @@ double median(std::vector<double> v) {
 }
 
 TEST(ErosionReduced, SemiResolvedPoreJetsOutrunUnresolvedAndUnresolvedLayerStays) {
-  const std::string dir = std::string(ISPHDEM_SOURCE_DIR) + "/examples/internal_erosion_2d";
-  // The packing (packing_reduced.restart) is the ctest fixture erosion_reduced_packing.
-  ASSERT_TRUE(std::filesystem::exists(dir + "/packing_reduced.restart"))
+  // The packing (packing_reduced.restart, in the build tree) is the ctest fixture
+  // erosion_reduced_packing.
+  ASSERT_TRUE(std::filesystem::exists(cli::reduced_packing_dir() / "packing_reduced.restart"))
       << "pack the layer first (ctest runs the erosion_reduced_packing fixture)";
   std::map<std::string, std::map<std::string, std::vector<double>>> d;
   for (const std::string model : {"unresolved", "semi-resolved"}) {
     const auto out = cli::scratch("erosion_reduced_" + model);
     const auto r =
-        cli::run(dir + "/reduced.toml --out " + out.string() +
+        cli::run(cli::reduced_case() + " --out " + out.string() +
                  " --quiet --set inflow.velocity=0.005 --set 'coupling.model=\"" + model + "\"'");
     ASSERT_EQ(r.exit_code, 0) << model << ": " << r.output;
     d[model] = read_diagnostics(out);
