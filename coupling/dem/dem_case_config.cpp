@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -54,10 +56,115 @@ std::string string_key(const toml::table& t, const std::string& key) {
   return *s;
 }
 
+
+// ${name} and $x of a LIGGGHTS input line with the values known; nullopt if one is unknown or
+// the line has an immediate $(...) expression.
+std::optional<std::string> substitute(const std::string& line,
+                                      const std::map<std::string, std::string>& vars) {
+  std::string out;
+  for (size_t i = 0; i < line.size(); i++) {
+    if (line[i] != '$') {
+      out += line[i];
+      continue;
+    }
+    if (i + 1 >= line.size() || line[i + 1] == '(') return std::nullopt;
+    std::string name;
+    if (line[i + 1] == '{') {
+      const size_t close = line.find('}', i + 2);
+      if (close == std::string::npos) return std::nullopt;
+      name = line.substr(i + 2, close - i - 2);
+      i = close;
+    } else {
+      name = line.substr(i + 1, 1);
+      i++;
+    }
+    const auto v = vars.find(name);
+    if (v == vars.end()) return std::nullopt;
+    out += v->second;
+  }
+  return out;
+}
+
+std::vector<std::string> words(const std::string& line) {
+  std::vector<std::string> w;
+  std::istringstream in(line);
+  for (std::string x; in >> x;) w.push_back(x);
+  return w;
+}
+
+// The script's read_restart files that do not exist, with the line that names them: the script
+// read as LIGGGHTS reads it (comments, `&` continuations; `variable NAME index|string VALUE`
+// after the -var values, which win over index defaults), stopping at the first command whose
+// variables are not all known. Included files are not followed.
+void check_restart_files(const DemCaseConfig& c, const std::optional<std::string>& prepare,
+                         const std::filesystem::path& case_dir) {
+  std::ifstream in(c.script);
+  std::map<std::string, std::string> vars(c.variables.begin(), c.variables.end());
+  std::string line, joined;
+  int number = 0, first = 0;
+  while (std::getline(in, line)) {
+    number++;
+    if (joined.empty()) first = number;
+    bool quoted = false;
+    for (size_t i = 0; i < line.size(); i++) {
+      if (line[i] == '"') quoted = !quoted;
+      if (line[i] == '#' && !quoted) {
+        line.resize(i);
+        break;
+      }
+    }
+    const size_t end = line.find_last_not_of(" \t\r");
+    line.resize(end == std::string::npos ? 0 : end + 1);
+    if (!line.empty() && line.back() == '&') {
+      line.pop_back();
+      joined += line + " ";
+      continue;
+    }
+    joined += line;
+    const auto w0 = words(joined);
+    const std::string raw = joined;
+    joined.clear();
+    if (w0.empty()) continue;
+    const auto expanded = substitute(raw, vars);
+    if (!expanded) {
+      if (w0[0] == "variable" && w0.size() >= 2) vars.erase(w0[1]);  // value unknown from here
+      continue;
+    }
+    const auto w = words(*expanded);
+    if (w.empty()) continue;
+    if (w[0] == "variable" && w.size() >= 4) {
+      if (w[2] == "index" && !vars.count(w[1])) vars[w[1]] = w[3];
+      else if (w[2] == "string") vars[w[1]] = w[3];
+      else if (w[2] != "index") vars.erase(w[1]);
+    } else if (w[0] == "read_restart" && w.size() >= 2) {
+      // LIGGGHTS opens it from the working directory; '*' is a step number, '%' per processor.
+      if (w[1].find_first_of("*%") != std::string::npos) continue;
+      if (std::filesystem::exists(w[1])) continue;
+      std::string m = "the script " + c.script.filename().string() + " (line " +
+                      std::to_string(first) + ": read_restart) reads '" + w[1] +
+                      "', which does not exist";
+      if (prepare) {
+        // The command as the case file gives it, with this isphdem's path for a leading
+        // "isphdem" so that it can be pasted as it is.
+        std::string command = *prepare;
+        std::error_code ec;
+        const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+        if (!ec && command.rfind("isphdem ", 0) == 0) command = self.string() + command.substr(7);
+        const std::filesystem::path dir = case_dir.empty() ? "." : case_dir;
+        m += ". Make it first ([dem] prepare in the case file):\n  cd " +
+             std::filesystem::absolute(dir).lexically_normal().string() + " && " + command;
+      } else {
+        m += " (make it first; [dem] prepare = \"COMMAND\" in the case file prints the command "
+             "that does)";
+      }
+      throw std::runtime_error("[dem] " + m);
+    }
+  }
+}
 }  // namespace
 
 std::vector<std::string> dem_table_keys() {
-  return {"script", "substeps", "variables", "log", "screen"};
+  return {"script", "substeps", "variables", "log", "screen", "prepare"};
 }
 
 DemCaseConfig parse_dem_table(const toml::table& dem, const std::filesystem::path& case_dir) {
@@ -106,6 +213,9 @@ DemCaseConfig parse_dem_table(const toml::table& dem, const std::filesystem::pat
                              std::filesystem::absolute(dir).lexically_normal().string());
     std::sort(c.variables.begin(), c.variables.end());
   }
+  std::optional<std::string> prepare;
+  if (dem.contains("prepare")) prepare = string_key(dem, "prepare");
+  check_restart_files(c, prepare, case_dir);
   if (dem.contains("log")) c.log = string_key(dem, "log");
   if (dem.contains("screen")) {
     c.screen = string_key(dem, "screen");

@@ -67,6 +67,20 @@ inline std::filesystem::path scratch(const std::string& name) {
   return d;
 }
 
+// The reduced erosion layer's packing, written into the build tree by the ctest fixture
+// erosion_reduced_packing (tests/CMakeLists.txt, REDUCED_PACKING_DIR), not beside the case.
+inline std::filesystem::path reduced_packing_dir() {
+  return std::filesystem::path(ISPHDEM_BINARY_DIR) / "test_output" / "erosion_reduced_packing";
+}
+
+// examples/internal_erosion_2d/reduced.toml with the override that reads that packing, ready for
+// `isphdem run` (more --set may follow).
+inline std::string reduced_case() {
+  return std::string(ISPHDEM_SOURCE_DIR) +
+         "/examples/internal_erosion_2d/reduced.toml --set 'dem.variables.packing_dir=\"" +
+         reduced_packing_dir().string() + "\"'";
+}
+
 inline void write_file(const std::filesystem::path& p, const std::string& text) {
   std::ofstream(p) << text;
 }

@@ -10,8 +10,7 @@ namespace {
 
 TEST(AutoModelRun, ReducedErosionLayerResolvesTheClumpsOnly) {
   const auto dir = scratch("auto_model");
-  const std::string c =
-      std::string(ISPHDEM_SOURCE_DIR) + "/examples/internal_erosion_2d/reduced.toml";
+  const std::string c = reduced_case();
   const Result r = run(c + " --out " + (dir / "out").string() +
                        " --set coupling.model=auto --set time.end=0.0002"
                        " --set output.interval=0.0001");

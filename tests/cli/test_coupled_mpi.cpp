@@ -33,14 +33,13 @@ TEST(CoupledMpi, ErosionLayerMatchesOneRank) {
   // steps: both runs, decomposed or with shared rows, part by 1e-5 between steps 20 and 30, where
   // a fine's contact or a pocket's blend switches on in one run and not the other. Positions in dx
   // (1 mm) and grain radii, velocities in v_in (5 mm/s).
-  const std::string dir = std::string(ISPHDEM_SOURCE_DIR) + "/examples/internal_erosion_2d";
-  ASSERT_TRUE(std::filesystem::exists(dir + "/packing_reduced.restart"))
+  ASSERT_TRUE(std::filesystem::exists(reduced_packing_dir() / "packing_reduced.restart"))
       << "pack the layer first (ctest runs the erosion_reduced_packing fixture)";
   for (const auto& [model, end] : {std::pair{"unresolved", "0.02"}, {"semi-resolved", "0.002"}}) {
     const auto out = scratch(std::string("coupled_mpi_erosion_layer_") + model);
     for (const int np : {1, ranks()}) {
       const Result r = mpirun_run(
-          np, dir + "/reduced.toml --out " + (out / std::to_string(np)).string() +
+          np, reduced_case() + " --out " + (out / std::to_string(np)).string() +
                   " --quiet --set solver.preconditioner=amg --set solver.pressure_tolerance=1e-10"
                   " --set coupling.model=" +
                   model + " --set time.end=" + end + " --set output.interval=" + end);

@@ -10,13 +10,12 @@ namespace isphdem::cli {
 namespace {
 
 TEST(LiggghtsStdout, RestartVersionLineGoesToTheScreenFile) {
-  const std::string dir = std::string(ISPHDEM_SOURCE_DIR) + "/examples/internal_erosion_2d";
-  ASSERT_TRUE(std::filesystem::exists(dir + "/packing_reduced.restart"))
+  ASSERT_TRUE(std::filesystem::exists(reduced_packing_dir() / "packing_reduced.restart"))
       << "pack the layer first (ctest runs the erosion_reduced_packing fixture)";
   const auto out = scratch("liggghts_stdout");
   // stdout alone: stderr to a file of its own.
   const Result r =
-      run_shell("(" + isphdem() + " run " + dir + "/reduced.toml --out " + (out / "run").string() +
+      run_shell("(" + isphdem() + " run " + reduced_case() + " --out " + (out / "run").string() +
                 " --set time.end=0.002 --set output.interval=0.002 2> " +
                 (out / "stderr.txt").string() + ")");
   std::printf("stdout:\n%s\nstderr:\n%s", r.output.c_str(), read_file(out / "stderr.txt").c_str());

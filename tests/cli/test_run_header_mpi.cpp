@@ -62,11 +62,10 @@ TEST(RunHeaderMpi, DecomposedAndSharedRowsSayWhichWithoutAWarning) {
 // A coupled case whose script reads a restart (LIGGGHTS printed "version 3 8" once per rank),
 // with the erosion cases' ilu0.
 TEST(RunHeaderMpi, CoupledErosionCaseSaysItsRanksAndNothingOfLiggghts) {
-  const std::string dir = std::string(ISPHDEM_SOURCE_DIR) + "/examples/internal_erosion_2d";
-  ASSERT_TRUE(std::filesystem::exists(dir + "/packing_reduced.restart"))
+  ASSERT_TRUE(std::filesystem::exists(reduced_packing_dir() / "packing_reduced.restart"))
       << "pack the layer first (ctest runs the erosion_reduced_packing fixture)";
   const auto out = scratch("run_header_mpi_coupled");
-  const Result r = mpirun_run(2, dir + "/reduced.toml --out " + out.string() +
+  const Result r = mpirun_run(2, reduced_case() + " --out " + out.string() +
                                      " --set time.end=0.002 --set output.interval=0.002");
   std::printf("%s", r.output.c_str());
   ASSERT_EQ(r.exit_code, 0);

@@ -21,7 +21,9 @@ TEST(ErosionModels, OnlyResolvedFinesLiftTheLayerSurfaceAtTheSeedsInflow) {
       dir, "base = \"" + std::string(ISPHDEM_SOURCE_DIR) +
                "/examples/internal_erosion_2d/reduced.toml\"\n"
                "reference = \"model=resolved\"\n"
-               "[set]\n\"time.end\" = 0.15\n\"output.interval\" = 0.15\n"
+               "[set]\n\"dem.variables.packing_dir\" = \"" +
+               reduced_packing_dir().string() +
+               "\"\n\"time.end\" = 0.15\n\"output.interval\" = 0.15\n"
                "\"output.diagnostics_every\" = 10\n\"inflow.velocity\" = 0.005\n"
                "\"solver.preconditioner\" = \"amg\"\n\"particles.spacing\" = 0.0005\n"
                "\"time.dt\" = 5e-5\n\"dem.substeps\" = 50\n"

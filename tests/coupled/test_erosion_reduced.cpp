@@ -44,15 +44,15 @@ double median(std::vector<double> v) {
 }
 
 TEST(ErosionReduced, SemiResolvedPoreJetsOutrunUnresolvedAndUnresolvedLayerStays) {
-  const std::string dir = std::string(ISPHDEM_SOURCE_DIR) + "/examples/internal_erosion_2d";
-  // The packing (packing_reduced.restart) is the ctest fixture erosion_reduced_packing.
-  ASSERT_TRUE(std::filesystem::exists(dir + "/packing_reduced.restart"))
+  // The packing (packing_reduced.restart, in the build tree) is the ctest fixture
+  // erosion_reduced_packing.
+  ASSERT_TRUE(std::filesystem::exists(cli::reduced_packing_dir() / "packing_reduced.restart"))
       << "pack the layer first (ctest runs the erosion_reduced_packing fixture)";
   std::map<std::string, std::map<std::string, std::vector<double>>> d;
   for (const std::string model : {"unresolved", "semi-resolved"}) {
     const auto out = cli::scratch("erosion_reduced_" + model);
     const auto r =
-        cli::run(dir + "/reduced.toml --out " + out.string() +
+        cli::run(cli::reduced_case() + " --out " + out.string() +
                  " --quiet --set inflow.velocity=0.005 --set 'coupling.model=\"" + model + "\"'");
     ASSERT_EQ(r.exit_code, 0) << model << ": " << r.output;
     d[model] = read_diagnostics(out);
@@ -93,15 +93,14 @@ TEST(ErosionReduced, SemiResolvedPoreJetsOutrunUnresolvedAndUnresolvedLayerStays
 // 2.5e-5): the pump compressed the fluid under the nearly closed layer at the rate alpha_s / dt
 // allowed to relax it, and the bodies leaked. Measured now: docs/resolved.md, "Time step".
 TEST(ErosionReduced, SemiResolvedPoreJetsHoldFromOneToAQuarterMillisecondStep) {
-  const std::string dir = std::string(ISPHDEM_SOURCE_DIR) + "/examples/internal_erosion_2d";
-  ASSERT_TRUE(std::filesystem::exists(dir + "/packing_reduced.restart"))
+  ASSERT_TRUE(std::filesystem::exists(cli::reduced_packing_dir() / "packing_reduced.restart"))
       << "pack the layer first (ctest runs the erosion_reduced_packing fixture)";
   std::map<std::string, double> jet;
   for (const std::string dt : {"1e-3", "2.5e-4"}) {
     const auto out = cli::scratch("erosion_reduced_dt_" + dt);
     const std::string substeps = dt == "1e-3" ? "1000" : "250";
     const std::string every = dt == "1e-3" ? "10" : "40";  // a row every 0.01 s
-    const auto r = cli::run(dir + "/reduced.toml --out " + out.string() +
+    const auto r = cli::run(cli::reduced_case() + " --out " + out.string() +
                             " --quiet --set inflow.velocity=0.005 --set "
                             "'coupling.model=\"semi-resolved\"' --set time.end=0.3 --set time.dt=" +
                             dt + " --set dem.substeps=" + substeps +

@@ -59,7 +59,7 @@ TEST_F(DemTable, ParsesAllKeys) {
                                    "nGrains", "500",          "-var",    "name",     "fine",
                                    "-log",    "/out/log.dem", "-screen", "/dev/null"};
   EXPECT_EQ(args, want);
-  EXPECT_EQ(isphdem::dem_table_keys().size(), 5u);
+  EXPECT_EQ(isphdem::dem_table_keys().size(), 6u);
 }
 
 TEST_F(DemTable, CaseDirVariableCanBeOverridden) {
@@ -91,6 +91,50 @@ TEST_F(DemTable, BadValuesNameTheKey) {
   EXPECT_NE(error_of("script = \"in.test\"\nsubsteps = 1\n[variables]\n\"a b\" = 1\n")
                 .find("variables.a b"),
             std::string::npos);
+}
+
+// A read_restart of a file that does not exist stops before LIGGGHTS starts (LIGGGHTS would end
+// the process with MPI_ABORT), naming the file, the line and the case's [dem] prepare command.
+// The path is expanded as LIGGGHTS does: -var values (the [dem.variables]) over index defaults,
+// ${name} and $x, `&` continuations, comments.
+TEST_F(DemTable, MissingRestartNamesFileLineAndPrepareCommand) {
+  std::ofstream(dir_ / "in.restart")
+      << "variable packing index packing.restart  # default\n"
+         "variable packing_dir index ${case_dir}\n"
+         "atom_modify map array\n"
+         "read_restart &\n"
+         "    ${packing_dir}/$p_${packing} # p is set by the case\n";
+  const std::string dir = fs::absolute(dir_).lexically_normal().string();
+  const auto e = error_of(
+      "script = \"in.restart\"\nsubsteps = 1\n"
+      "prepare = \"isphdem dem in.packing -var packing red.restart\"\n"
+      "[variables]\npacking = \"red.restart\"\np = \"x\"\n");
+  EXPECT_NE(e.find("[dem] the script in.restart (line 4: read_restart) reads '" + dir +
+                   "/x_red.restart', which does not exist"),
+            std::string::npos)
+      << e;
+  // The command with this isphdem's path, from the case's directory.
+  EXPECT_NE(e.find("Make it first ([dem] prepare in the case file):\n  cd " + dir + " && /"),
+            std::string::npos)
+      << e;
+  EXPECT_NE(e.find("/dem_case_config_test dem in.packing -var packing red.restart"),
+            std::string::npos)
+      << e;
+  // Without prepare, the key is named.
+  EXPECT_NE(error_of("script = \"in.restart\"\nsubsteps = 1\n[variables]\np = \"x\"\n")
+                .find("x_packing.restart', which does not exist (make it first; [dem] prepare"),
+            std::string::npos);
+  // Once the file exists the table parses.
+  std::ofstream(dir_ / "x_red.restart") << "";
+  EXPECT_EQ(error_of("script = \"in.restart\"\nsubsteps = 1\n[variables]\n"
+                     "packing = \"red.restart\"\np = \"x\"\n"),
+            "");
+  fs::remove(dir_ / "x_red.restart");
+  // A path with a variable the scan cannot know ($(...), an equal-style variable) is left to
+  // LIGGGHTS.
+  std::ofstream(dir_ / "in.unknown") << "variable n equal 2\nread_restart ${n}/a.restart\n"
+                                        "read_restart $(1+1).restart\n";
+  EXPECT_EQ(error_of("script = \"in.unknown\"\nsubsteps = 1\n"), "");
 }
 
 TEST(FluidDtCheck, AcceptsExactMultipleRejectsOthers) {
