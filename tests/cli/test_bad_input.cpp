@@ -279,40 +279,41 @@ TEST(BadInput, CoupledCaseNamesTheFluidsViscosity) {
             std::string::npos);
   EXPECT_EQ(zero.output.find("[unresolved]:"), std::string::npos);
   EXPECT_EQ(count_snapshots(dir / "out"), 0);
-  // A fresh clone has no packing: reduced.toml's script reads packing_reduced.restart, which only
-  // `isphdem dem in.packing -var ...` makes. Before this check LIGGGHTS stopped with "Cannot open
-  // restart file" and an MPI_ABORT banner; now the run stops before LIGGGHTS starts and prints the
-  // case's [dem] prepare command, with this isphdem's path, to paste.
-  TEST(BadInput, MissingPackingNamesTheCommandThatMakesIt) {
-    const auto dir = scratch("missing_packing");  // empty: no packing_reduced.restart in it
-    const Result r =
-        run(std::string(ISPHDEM_SOURCE_DIR) + "/examples/internal_erosion_2d/reduced.toml --out " +
-            (dir / "out").string() + " --set 'dem.variables.packing_dir=\"" + dir.string() + "\"'");
-    std::printf("%s", r.output.c_str());
-    EXPECT_EQ(r.exit_code, 2);
-    EXPECT_NE(r.output.find("[dem] the script in.liggghts (line 16: read_restart) reads '" +
-                            (dir / "packing_reduced.restart").string() + "', which does not exist"),
-              std::string::npos);
-    EXPECT_EQ(count(r.output, "Make it first ([dem] prepare in the case file):\n  cd " +
-                                  std::string(ISPHDEM_SOURCE_DIR) +
-                                  "/examples/internal_erosion_2d && " + isphdem() +
-                                  " dem in.packing -var packing packing_reduced.restart -var "
-                                  "nclumps 6 -var nfines 32 -var x_lo 0.010 -var x_hi 0.026 -var "
-                                  "mesh_y 0.014 -var box_x 0.036 -var box_y 0.07\n"),
-              1);
-    EXPECT_EQ(r.output.find("MPI_ABORT"), std::string::npos);
-    EXPECT_EQ(r.output.find("Cannot open restart file"), std::string::npos);
-    EXPECT_EQ(r.output.find("LIGGGHTS stopped the run"), std::string::npos);
-    // LIGGGHTS never started: it writes its screen file (liggghts.screen) as it starts.
-    EXPECT_FALSE(std::filesystem::exists(dir / "out" / "liggghts.screen"));
-  }
+}
 
-  TEST(BadInput, UnresolvedWithoutDemNamesBothTables) {
-    const Result r =
-        run_bad_case("unresolved_alone",
-                     with(kGoodCase, "[time]", "[unresolved]\ngrain_diameter = 1e-3\n[time]"));
-    EXPECT_NE(r.output.find("[unresolved] couples a fluid with [dem] grains"), std::string::npos);
-  }
+// A fresh clone has no packing: reduced.toml's script reads packing_reduced.restart, which only
+// `isphdem dem in.packing -var ...` makes. Before this check LIGGGHTS stopped with "Cannot open
+// restart file" and an MPI_ABORT banner; now the run stops before LIGGGHTS starts and prints the
+// case's [dem] prepare command, with this isphdem's path, to paste.
+TEST(BadInput, MissingPackingNamesTheCommandThatMakesIt) {
+  const auto dir = scratch("missing_packing");  // empty: no packing_reduced.restart in it
+  const Result r =
+      run(std::string(ISPHDEM_SOURCE_DIR) + "/examples/internal_erosion_2d/reduced.toml --out " +
+          (dir / "out").string() + " --set 'dem.variables.packing_dir=\"" + dir.string() + "\"'");
+  std::printf("%s", r.output.c_str());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("[dem] the script in.liggghts (line 16: read_restart) reads '" +
+                          (dir / "packing_reduced.restart").string() + "', which does not exist"),
+            std::string::npos);
+  EXPECT_EQ(count(r.output, "Make it first ([dem] prepare in the case file):\n  cd " +
+                                std::string(ISPHDEM_SOURCE_DIR) +
+                                "/examples/internal_erosion_2d && " + isphdem() +
+                                " dem in.packing -var packing packing_reduced.restart -var "
+                                "nclumps 6 -var nfines 32 -var x_lo 0.010 -var x_hi 0.026 -var "
+                                "mesh_y 0.014 -var box_x 0.036 -var box_y 0.07\n"),
+            1);
+  EXPECT_EQ(r.output.find("MPI_ABORT"), std::string::npos);
+  EXPECT_EQ(r.output.find("Cannot open restart file"), std::string::npos);
+  EXPECT_EQ(r.output.find("LIGGGHTS stopped the run"), std::string::npos);
+  // LIGGGHTS never started: it writes its screen file (liggghts.screen) as it starts.
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "liggghts.screen"));
+}
+
+TEST(BadInput, UnresolvedWithoutDemNamesBothTables) {
+  const Result r = run_bad_case(
+      "unresolved_alone", with(kGoodCase, "[time]", "[unresolved]\ngrain_diameter = 1e-3\n[time]"));
+  EXPECT_NE(r.output.find("[unresolved] couples a fluid with [dem] grains"), std::string::npos);
+}
 
 }  // namespace
 }  // namespace isphdem::cli
