@@ -28,11 +28,15 @@
 #include "io/snapshot_writer.hpp"
 #include "run/auto_model.hpp"
 #include "run/case_keys.hpp"
+#include "run/checkpoints.hpp"
 #include "run/coupled_run.hpp"
 #include "run/coupling_stages.hpp"
 #include "run/dem_only_run.hpp"
 #include "run/erosion_diagnostics.hpp"
+#include "run/fluid_case.hpp"
+#include "run/fluid_checkpoint.hpp"
 #include "run/fluid_run.hpp"
+#include "run/interrupt.hpp"
 #include "run/replicated_ranks.hpp"
 #include "run/run_loop.hpp"
 #include "run/run_report.hpp"
@@ -46,135 +50,15 @@ namespace fs = std::filesystem;
 namespace {
 
 const char* kUsage =
-    "usage: isphdem run CASE.toml --out DIR [--set key=value ...] [--quiet]\n"
+    "usage: isphdem run CASE.toml --out DIR [--set key=value ...] [--quiet] [--resume]\n"
     "  --out DIR        output directory (snap_<step>.h5, *.xdmf, diagnostics.csv, result.json);\n"
     "                   results of an earlier run there are replaced\n"
     "  --set key=value  override a case key, e.g. --set time.end=0.2 (repeatable)\n"
-    "  --quiet          no progress line and no summary\n";
+    "  --quiet          no progress line and no summary\n"
+    "  --resume         continue from the newest checkpoint in DIR (same case, --set and ranks;\n"
+    "                   time.end may be later)\n";
 
-using Arguments = VerbArguments;
-
-// A fluid-only case. On several ranks (mpirun) with solver.preconditioner = "amg" each rank holds
-// and steps its own part of the fluid (FluidRun::decompose), the pressure equation one system
-// over the ranks; with parallel.decompose = false every rank holds all particles and computes
-// its block of rows. The ranks write each snapshot together (each its own rows); rank 0 talks and
-// writes diagnostics.csv.
-template <int Dim>
-int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
-  int rank = 0, ranks = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  const bool talk = rank == 0 && !args.quiet;
-  const RunSettings settings = parse_run_settings(c);
-  // Decomposed from the start: each rank builds only its share of the particles, and no rank
-  // ever holds the whole fluid. The checks of the scene then see a rank's share: every rank
-  // stops with the first failing rank's message.
-  const bool split = FluidRun<Dim>::decomposes(
-      settings, c.string("solver.preconditioner", isph::LinearSolverConfig{}.preconditioner),
-      ranks);
-  FluidScene<Dim> scene;
-  agree_on_failure(split, [&] {
-    scene = build_fluid_scene<Dim>(c, rank, split ? ranks : 1);
-    isph::IsphSolver<Dim>::check_inside(scene.particles, scene.domain);
-  });
-  FluidRun<Dim> run(std::move(scene), settings);  // collective when split (decomposed at once)
-  auto& solver = run.solver();
-  const auto& P = solver.particles();
-  // The ranks must start from the same fluid, whether or not they then keep only their part.
-  if (!split) check_replicas(P, solver.steps());
-  const bool decomposed = run.decompose();
-  // Over all ranks when decomposed (collective): the counts, the limits and the first step.
-  std::array<double, 3> count{double(P.count(isph::kFluid)), double(P.count(isph::kWall)),
-                              double(P.size())};
-  if (const isph::RowShare* d = solver.decomposition()) d->sum_in_place(count.data(), 3);
-  const long particles = long(count[2]);
-  const auto l = solver.limits();
-  const double first_dt = run.next_dt();
-
-  if (talk) {
-    std::printf("isphdem run: %s (%dD)\n  particles: %.0f fluid, %.0f wall; dx = %g m, h = %g m\n",
-                c.path().string().c_str(), Dim, count[0], count[1], P.spacing, solver.kernel().h());
-    if (settings.fixed_dt)
-      std::printf("  time step: fixed %g s (stable limit now %g s, %s)\n", *settings.fixed_dt,
-                  l.min(), l.limiting().c_str());
-    else
-      std::printf("  time step: auto, now %g s (%s limit; CFL %g, viscous %g, force %g s)\n",
-                  first_dt, l.limiting().c_str(), l.cfl, l.viscous, l.force);
-    std::printf("  output: %s every %g s to t = %g s\n", args.out.string().c_str(),
-                settings.output_interval, settings.t_end);
-    std::fflush(stdout);
-  }
-
-  const std::vector<std::string> columns{
-      "time",           "step",         "wall_seconds",      "ppe_iterations",
-      "max_speed",      "dt",           "ppe_residual",      "surface_particles",
-      "kinetic_energy", "fluid_volume", "max_eddy_viscosity"};
-  report.check_columns(columns);  // before the writer clears an earlier run's output
-  SnapshotWriter writer(args.out, true, MPI_COMM_WORLD);
-  std::unique_ptr<DiagnosticsWriter> diagnostics;
-  if (rank == 0) {
-    // The case as run, overrides applied, next to the results.
-    std::ofstream f(args.out / "case_used.toml");
-    f << "# " << c.path().string() << " with the overrides of this run\n" << c.table() << "\n";
-    diagnostics = std::make_unique<DiagnosticsWriter>(args.out / "diagnostics.csv", columns);
-  }
-  auto snapshot = [&]() {
-    if (!decomposed) check_replicas(P, solver.steps());
-    write_collectively(rank, [&] {
-      Snapshot s;
-      s.step = solver.steps();
-      s.time = solver.time();
-      const auto [first, last] = solver.own_block();
-      add_fluid_group(P, s, first, last);
-      writer.write(s);
-    });
-  };
-
-  const double start = omp_get_wtime();
-  ProgressLine progress(settings.t_end, talk);
-  snapshot();
-  long ppe_total = 0;
-  auto after_step = [&](const isph::StepStats& st) {
-    ppe_total += st.ppe_iterations;
-    const long step = solver.steps();
-    if (step % settings.diagnostics_every == 0) {
-      const double ke = run.kinetic_energy();
-      write_on_rank_zero(rank, [&] {
-        diagnostics->row({solver.time(), double(step), omp_get_wtime() - start,
-                          double(st.ppe_iterations), st.max_speed, st.dt, st.ppe_residual,
-                          double(st.surface_particles), ke, st.fluid_volume,
-                          st.max_eddy_viscosity});
-      });
-    }
-    progress.update(solver.time(), step);
-  };
-  std::string why, cause;
-  const bool finished = run_to_end(run, settings, 1e-12, after_step, snapshot, progress, rank == 0,
-                                   args.out, why, cause);
-  report.cost(solver.time(), solver.steps(), particles, omp_get_wtime() - start, ppe_total);
-  report.parallel(solver.row_parts(), solver.rows_shared(), decomposed);
-  if (!finished) {
-    report.stopped(why, cause);
-    return 1;
-  }
-
-  if (talk) {
-    const double wall = omp_get_wtime() - start;
-    const auto& t = solver.timings();
-    const long steps = solver.steps();
-    std::printf(
-        "done: t = %g s in %ld steps, %s wall, %.3g particle-steps/s, %.1f PPE iterations/step\n",
-        solver.time(), steps, format_duration(wall).c_str(), double(particles) * steps / wall,
-        steps ? double(ppe_total) / steps : 0.0);
-    std::printf(
-        "  time per part: neighbours %.0f%%, operators %.0f%%, assembly %.0f%%, solve %.0f%%, "
-        "rest %.0f%%\n",
-        100 * t.neighbors / t.total(), 100 * t.operators / t.total(), 100 * t.assembly / t.total(),
-        100 * t.solve / t.total(), 100 * t.rest / t.total());
-    print_ppe_cost(solver);
-  }
-  return 0;
-}
+using Arguments = RunArguments;
 
 DemCaseConfig dem_config(const CaseFile& c) {
   const auto* table = c.table()["dem"].as_table();
@@ -201,6 +85,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     return s;
   }();
   const DemCaseConfig dem = dem_config(given);
+  if (args.resume) throw CaseError("--resume: coupled cases cannot be resumed yet");
   // Checked here as well as in CoupledRun so that it stops before LIGGGHTS writes its screen.
   if (!settings.fixed_dt)
     throw CaseError(
@@ -379,8 +264,9 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     if (rank == 0) progress.update(solver.time(), step);
   };
   std::string why, cause;
+  long k = 1;
   const bool finished = run_to_end(run, settings, 1e-9, after_step, snapshot, progress, rank == 0,
-                                   args.out, why, cause);
+                                   args.out, why, cause, k, [](long) {});
   backend.finalize();
   report.cost(solver.time(), solver.steps(), particles, omp_get_wtime() - start, ppe_total);
   report.parallel(solver.row_parts(), solver.rows_shared(), decomposed);
@@ -424,7 +310,12 @@ int run_main(int argc, char** argv) {
     return 2;
   };
   try {
-    args = parse_verb_arguments(argc, argv, "case file", kUsage);
+    static_cast<VerbArguments&>(args) = parse_verb_arguments(
+        argc, argv, "case file", kUsage, [&](const std::string& arg, const auto&) {
+          if (arg != "--resume") return false;
+          args.resume = true;
+          return true;
+        });
     // A result.json never outlives the run it describes, also when this one stops at its input.
     if (rank == 0) remove_run_result(args.out);
     const CaseFile c = CaseFile::load(args.file, args.overrides, case_keys());
@@ -438,10 +329,13 @@ int run_main(int argc, char** argv) {
     if (has_dem && has_fluid)
       rc = case_dimension(c) == 2 ? run_coupled<2>(c, args, *report)
                                   : run_coupled<3>(c, args, *report);
+    else if (has_dem && args.resume)
+      throw CaseError("--resume: DEM-only cases write no checkpoints (run them anew)");
     else if (has_dem)
       rc = run_dem_only(c, args.out, args.quiet, *report);
     else
-      rc = case_dimension(c) == 2 ? run_case<2>(c, args, *report) : run_case<3>(c, args, *report);
+      rc = case_dimension(c) == 2 ? run_fluid_case<2>(c, args, *report)
+                                  : run_fluid_case<3>(c, args, *report);
     if (rank == 0) report->finish(!args.quiet);
     return rc;
   } catch (const CaseError& e) {
