@@ -3,14 +3,11 @@
 // diagnostics.csv and fluid.xdmf hold each time once.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <filesystem>
 #include <string>
-#include <thread>
 #include <vector>
 
-#include "../output/h5_read.hpp"
-#include "cli_support.hpp"
+#include "resume_support.hpp"
 
 namespace isphdem::cli {
 namespace {
@@ -23,80 +20,18 @@ const std::string kCase = example("taylor_green_2d") +
                           " --quiet --set particles.spacing=0.025 --set output.interval=0.05"
                           " --set output.checkpoint_interval=0.1 --set output.diagnostics_every=3";
 
-std::vector<fs::path> files_named(const fs::path& dir, const std::string& prefix) {
-  std::vector<fs::path> found;
-  for (const auto& e : fs::directory_iterator(dir))
-    if (e.path().filename().string().rfind(prefix, 0) == 0) found.push_back(e.path());
-  std::sort(found.begin(), found.end());
-  return found;
-}
-
-// Every dataset of /fluid and the root attributes, bit for bit (storage order).
-void expect_same_snapshot(const fs::path& a, const fs::path& b) {
-  ASSERT_EQ(a.filename(), b.filename());
-  h5_read::File fa(a.string()), fb(b.string());
-  EXPECT_EQ(fa.attribute_f64("time"), fb.attribute_f64("time"));
-  EXPECT_EQ(fa.attribute_i64("step"), fb.attribute_i64("step"));
-  for (const char* name :
-       {"position", "velocity", "pressure", "porosity", "kind", "free_surface", "id"}) {
-    const std::string path = std::string("fluid/") + name;
-    const h5_read::Array x = fa.read(path), y = fb.read(path);
-    EXPECT_EQ(x.dims, y.dims) << path;
-    EXPECT_TRUE(x.f64 == y.f64) << path << " differs in " << a.filename();
-    EXPECT_TRUE(x.i64 == y.i64) << path;
-    EXPECT_TRUE(x.i32 == y.i32) << path;
-  }
-}
-
-// The rows without their wall-clock column, as text (the shortest round-trip spelling: equal
-// text is equal bits).
-std::vector<Row> diagnostics_without_wall(const fs::path& dir) {
-  auto rows = read_csv(dir / "diagnostics.csv");
-  for (auto& r : rows) r.erase("wall_seconds");
-  return rows;
-}
-
-// The Time values fluid.xdmf lists, in order.
-std::vector<std::string> xdmf_times(const fs::path& dir) {
-  return spans_between(read_file(dir / "fluid.xdmf"), "<Time Value=\"", "\"", "0123456789.e-+");
-}
-
-// Runs CASE ARGS into OUT in the background and sends SIGNAL once `ready` (a shell test) holds;
-// returns the run's exit status (-1 when it never ended) and output.
-Result run_and_signal(const fs::path& out, const std::string& args, const std::string& signal,
-                      const std::string& ready) {
-  const std::string script = "(" + isphdem() + " run " + args + " --out " + out.string() + " > " +
-                             (out.string() + ".log") +
-                             " 2>&1 & pid=$!; for i in $(seq 1 30000); do " + ready +
-                             " && break; kill -0 $pid 2> /dev/null || break; sleep 0.01; done; "
-                             "kill -" +
-                             signal + " $pid; wait $pid; echo \"exit=$?\")";
-  Result r = run_shell(script);
-  r.output += read_file(out.string() + ".log");
-  const auto at = r.output.find("exit=");
-  r.exit_code = at == std::string::npos ? -1 : std::stoi(r.output.substr(at + 5));
-  return r;
-}
-
-// A checkpoint is in OUT.
-std::string has_checkpoint(const fs::path& out) {
-  return "ls -d " + out.string() + "/checkpoint_* > /dev/null 2>&1";
-}
-
 class Resume : public ::testing::Test {
  protected:
-  // The run never stopped, shared by the tests (written once).
-  static fs::path reference() {
-    static const fs::path dir = [] {
-      const fs::path d = scratch("resume_reference") / "out";
-      const Result r = run(kCase + " --set time.end=0.4 --out " + d.string());
-      EXPECT_EQ(r.exit_code, 0) << r.output;
-      return d;
-    }();
-    return dir;
+  // The run never stopped, each test its own (ctest runs the tests side by side).
+  void SetUp() override {
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    reference_ = scratch(std::string("resume_reference_") + test->name()) / "out";
+    const Result r = run(kCase + " --set time.end=0.4 --out " + reference_.string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
   }
+  const fs::path& reference() const { return reference_; }
 
-  static void expect_same_as_reference(const fs::path& out) {
+  void expect_same_as_reference(const fs::path& out) const {
     const auto ours = files_named(out, "snap_"), theirs = files_named(reference(), "snap_");
     ASSERT_EQ(ours.size(), theirs.size());
     ASSERT_EQ(ours.size(), 9u);  // t = 0, 0.05, ..., 0.4
@@ -108,10 +43,12 @@ class Resume : public ::testing::Test {
     EXPECT_EQ(xdmf_times(out).size(), 9u);
     EXPECT_NE(read_file(out / "result.json").find("\"status\": \"finished\""), std::string::npos);
   }
+
+ private:
+  fs::path reference_;
 };
 
 TEST_F(Resume, ExtendingAFinishedRunEqualsOneRun) {
-  reference();
   const fs::path out = scratch("resume_extend") / "out";
   const Result first = run(kCase + " --set time.end=0.2 --out " + out.string());
   ASSERT_EQ(first.exit_code, 0) << first.output;
@@ -124,7 +61,6 @@ TEST_F(Resume, ExtendingAFinishedRunEqualsOneRun) {
 }
 
 TEST_F(Resume, SigtermWritesACheckpointAndTheResumedRunEqualsOneRun) {
-  reference();
   const fs::path out = scratch("resume_sigterm") / "out";
   const Result stopped =
       run_and_signal(out, kCase + " --set time.end=0.4", "TERM", has_checkpoint(out));
@@ -149,7 +85,6 @@ TEST_F(Resume, SigtermWritesACheckpointAndTheResumedRunEqualsOneRun) {
 }
 
 TEST_F(Resume, AfterAHardKillTheRowsAndSnapshotsPastTheCheckpointAreWrittenOnce) {
-  reference();
   const fs::path out = scratch("resume_kill") / "out";
   // Killed once the snapshot of t = 0.15 s (step 24) is written, after the checkpoint of t = 0.1
   // s (step 16): rows and snapshots past the checkpoint are there to be written again.
@@ -173,7 +108,7 @@ TEST_F(Resume, AfterAHardKillTheRowsAndSnapshotsPastTheCheckpointAreWrittenOnce)
   expect_same_as_reference(out);
 }
 
-TEST_F(Resume, WithoutACheckpointItSaysSo) {
+TEST(ResumeRefused, WithoutACheckpointItSaysSo) {
   const fs::path out = scratch("resume_none") / "out";
   const Result r = run(kCase + " --set time.end=0.4 --out " + out.string() + " --resume");
   EXPECT_NE(r.exit_code, 0);
