@@ -7,6 +7,7 @@
 #include <string>
 
 #include "atom.h"
+#include "dem/liggghts_restart_redirect.hpp"
 #include "domain.h"
 #include "fix_couple_isph.h"
 #include "fix_multisphere.h"
@@ -103,13 +104,20 @@ void LiggghtsBackend::initialize(const DemSetup& setup) {
     throw std::runtime_error("cannot open DEM input script '" + setup.script.string() +
                              "': no such readable file");
   lmp_ = open_liggghts(args_, comm_);
+  if (!resume_restart_.empty()) redirect_read_restart(lmp_.get(), resume_restart_);
   set_liggghts_context(lmp_, "script " + setup.script.string());
   if (!setup.script.empty()) lmp_->input->file(setup.script.string().c_str());
+  if (!resume_restart_.empty() && redirected_restarts(lmp_.get()) == 0)
+    throw std::runtime_error(
+        "--resume: the DEM script " + setup.script.string() +
+        " reads no restart (read_restart), so its grains cannot start from the checkpoint's: a "
+        "coupled case resumes when its script builds the grains from a read_restart (as "
+        "examples/internal_erosion_2d/in.liggghts does)");
   set_liggghts_context(lmp_, "a command isphdem gave after the script");
   for (const auto& c : setup.commands) command(c);
   set_liggghts_context(lmp_, "the DEM substeps of a fluid step");
   ran_ = false;
-  state_.time = 0.0;
+  state_.time = resume_restart_.empty() ? 0.0 : resume_time_;
   state_stale_ = true;
 }
 
@@ -124,8 +132,22 @@ double LiggghtsBackend::timestep() const { return lmp_->update->dt; }
 void LiggghtsBackend::advance(int n_substeps) {
   if (n_substeps < 1) throw std::invalid_argument("advance: n_substeps must be >= 1");
   const double dt = timestep();
-  command("run " + std::to_string(n_substeps) + " pre no post no");
+  command("run " + std::to_string(n_substeps) + (setup_ ? " post no" : " pre no post no"));
+  setup_ = false;
   state_.time += n_substeps * dt;
+}
+
+void LiggghtsBackend::resume_from(const std::string& restart, double time) {
+  if (lmp_) throw std::logic_error("LiggghtsBackend::resume_from after initialize");
+  resume_restart_ = restart;
+  resume_time_ = time;
+}
+
+void LiggghtsBackend::write_restart(const std::string& file) {
+  if (file.find_first_of(" \t\n*%\"'") != std::string::npos)
+    throw std::invalid_argument("write_restart: LIGGGHTS would split or expand '" + file + "'");
+  command("write_restart " + file);
+  setup_ = true;
 }
 
 void LiggghtsBackend::finalize() {
@@ -138,6 +160,7 @@ void LiggghtsBackend::finalize() {
     set_liggghts_context(lmp_, "the run of 0 steps isphdem gives before closing LIGGGHTS");
     command("run 0 post no");
   }
+  if (lmp_) forget_restart_redirect(lmp_.get());
   lmp_.reset();
 }
 

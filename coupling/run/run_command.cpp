@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
@@ -25,6 +27,7 @@
 #include "io/diagnostics_writer.hpp"
 #include "io/fluid_snapshot.hpp"
 #include "io/progress_line.hpp"
+#include "io/rank_agreement.hpp"
 #include "io/snapshot_writer.hpp"
 #include "run/auto_model.hpp"
 #include "run/case_keys.hpp"
@@ -60,6 +63,19 @@ const char* kUsage =
 
 using Arguments = RunArguments;
 
+// LIGGGHTS's restart in a coupled run's checkpoint directory.
+const char* const kDemRestart = "dem.restart";
+// coupling.model as a checkpoint stores it ("coupled_model": the index here), for "auto".
+const char* const kModels[] = {"unresolved", "resolved", "semi-resolved"};
+
+// The arrays of `a` whose names start with `prefix`, without it.
+StageState with_prefix(const CheckpointArrays& a, const std::string& prefix) {
+  StageState s;
+  for (const auto& [name, v] : a.reals)
+    if (name.compare(0, prefix.size(), prefix) == 0) s[name.substr(prefix.size())] = v;
+  return s;
+}
+
 DemCaseConfig dem_config(const CaseFile& c) {
   const auto* table = c.table()["dem"].as_table();
   if (!table) throw CaseError("'dem' must be a table: [dem] with script and substeps");
@@ -85,7 +101,6 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     return s;
   }();
   const DemCaseConfig dem = dem_config(given);
-  if (args.resume) throw CaseError("--resume: coupled cases cannot be resumed yet");
   // Checked here as well as in CoupledRun so that it stops before LIGGGHTS writes its screen.
   if (!settings.fixed_dt)
     throw CaseError(
@@ -98,7 +113,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   const bool choose = coupling_model(given) == "auto";
   const AutoThresholds thresholds = choose ? auto_thresholds(given) : AutoThresholds{};
   std::vector<std::unique_ptr<CouplingStage<Dim>>> stages;
-  if (!choose) stages = make_coupling_stages<Dim>(given, scene, dt, rank == 0);
+  if (!choose) stages = make_coupling_stages<Dim>(given, scene, dt, rank == 0 && !args.resume);
   Vec3 up{0.0, 0.0, 0.0};
   {
     isph::Vec<Dim> g = scene.config.gravity;
@@ -131,6 +146,16 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   report.check_columns(columns);
   if (rank == 0) fs::create_directories(args.out);
   LiggghtsBackend backend(dem.liggghts_args(args.out));
+  // Resumed: the fluid and the run's loop from this rank's file, the grains from LIGGGHTS's
+  // restart in the checkpoint, read where the script reads its own.
+  Checkpoints checkpoints(args.out, settings.checkpoint_interval, MPI_COMM_WORLD);
+  RunPosition position;
+  CheckpointArrays saved;
+  if (args.resume) {
+    position = checkpoints.resume(saved);
+    backend.resume_from((checkpoints.resumed_directory() / kDemRestart).string(),
+                        saved.real("solver_time"));
+  }
   backend.initialize({dem.script, {}});
   // Run on without grains, the fluid alone would pass for a coupled result. Seen on 2 ranks:
   // LIGGGHTS inserts into each processor's part of an insertion region, and a region that a
@@ -144,12 +169,20 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   std::vector<std::string> auto_lines;
   const CaseFile c = [&] {
     if (!choose) return given;
+    if (args.resume) {  // the first run's choice, made from the grains it started with
+      const auto code = saved.integer("coupled_model");
+      if (code < 0 || code >= std::int64_t(std::size(kModels)))
+        throw CaseError("--resume: the checkpoint's coupling model is unknown");
+      const std::string model = kModels[code];
+      auto_lines.push_back("coupling.model = \"auto\" -> \"" + model + "\" (as chosen at t = 0)");
+      return given.with_override("coupling.model=\"" + model + "\"");
+    }
     const AutoChoice a = choose_model(backend.state(), dx, thresholds);
     auto_lines.push_back("coupling.model = \"auto\" -> \"" + a.model + "\"");
     for (const auto& g : a.classes) auto_lines.push_back("  " + describe(g, dx));
     return given.with_override("coupling.model=\"" + a.model + "\"");
   }();
-  if (choose) stages = make_coupling_stages<Dim>(c, scene, dt, rank == 0);
+  if (choose) stages = make_coupling_stages<Dim>(c, scene, dt, rank == 0 && !args.resume);
   const GrainModels models = grain_models(coupling_model(c));
   CoupledRun<Dim> run(std::move(scene), settings, backend, dem.substeps, std::move(stages));
   auto& solver = run.solver();
@@ -176,15 +209,25 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   double grain_density = std::nan("");
   for (const auto& b : backend.state().bodies)
     if (b.volume > 0) grain_density = b.mass / b.volume;
-  const ErosionDiagnostics<Dim> erosion(
+  ErosionDiagnostics<Dim> erosion(
       backend.state(), up, c.has("inflow.velocity") ? std::abs(c.number("inflow.velocity")) : 1.0,
       grain_density);
-  SnapshotWriter writer(args.out, true, MPI_COMM_WORLD);
+  if (args.resume) {
+    restore_fluid(solver, saved);
+    run.restore(with_prefix(saved, "coupled_"));
+    erosion.restore(saved.real_array("erosion_layer"));
+  }
+  SnapshotWriter writer(args.out, !args.resume, MPI_COMM_WORLD);
+  if (args.resume)
+    writer.resume_after(checkpoints.resumed_step());
+  else
+    checkpoints.start_fresh();
   std::unique_ptr<DiagnosticsWriter> diagnostics;
   if (rank == 0) {
     std::ofstream f(args.out / "case_used.toml");
     f << "# " << c.path().string() << " with the overrides of this run\n" << c.table() << "\n";
-    diagnostics = std::make_unique<DiagnosticsWriter>(args.out / "diagnostics.csv", columns);
+    diagnostics = std::make_unique<DiagnosticsWriter>(args.out / "diagnostics.csv", columns,
+                                                      args.resume, checkpoints.resumed_step());
   }
   auto snapshot = [&]() {
     const DemState& state = backend.state();  // collective
@@ -198,10 +241,10 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     if (rank == 0) add_dem_groups(state, hydro_loads(run.loads()), s, &models);
     write_collectively(rank, [&] { writer.write(s); });
   };
-  const double start = omp_get_wtime();
+  const double start = omp_get_wtime() - position.wall_seconds;
   ProgressLine progress(settings.t_end, talk);
-  snapshot();
-  long ppe_total = 0;
+  if (!args.resume) snapshot();
+  long ppe_total = position.ppe_total;
   auto after_step = [&](const isph::StepStats& st) {
     ppe_total += st.ppe_iterations;
     const long step = solver.steps();
@@ -264,9 +307,42 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     if (rank == 0) progress.update(solver.time(), step);
   };
   std::string why, cause;
-  long k = 1;
-  const bool finished = run_to_end(run, settings, 1e-9, after_step, snapshot, progress, rank == 0,
-                                   args.out, why, cause, k, [](long) {});
+  const int model = int(std::find(std::begin(kModels), std::end(kModels), coupling_model(c)) -
+                        std::begin(kModels));
+  auto save = [&](long at) {
+    return checkpoints.write(
+        solver.steps(), solver.time(), RunPosition{at, 0, ppe_total, omp_get_wtime() - start},
+        [&](CheckpointArrays& a, const fs::path& staged) {
+          save_fluid(solver, a);
+          StageState state;
+          run.save(state);
+          for (auto& [name, v] : state) a.reals["coupled_" + name] = std::move(v);
+          a.reals["erosion_layer"] = erosion.state();
+          a.set_integer("coupled_model", model);
+          backend.write_restart((staged / kDemRestart).string());  // collective
+        });
+  };
+  long k = args.resume ? position.output_index : 1;
+  bool finished = false;
+  try {
+    InterruptHandlers handlers;
+    finished =
+        run_to_end(run, settings, 1e-9, after_step, snapshot, progress, rank == 0, args.out, why,
+                   cause, k, [&](long at) {
+                     checkpoint_between_steps(solver.time(), solver.steps(), checkpoints, at, save);
+                   });
+    if (finished && settings.checkpoint_interval > 0 &&
+        checkpoints.last_written() != solver.steps())
+      save(k);
+  } catch (const Interrupted& e) {
+    progress.finish();
+    backend.finalize();
+    report.cost(solver.time(), solver.steps(), particles, omp_get_wtime() - start, ppe_total);
+    report.parallel(solver.row_parts(), solver.rows_shared(), decomposed);
+    report.interrupted(announce_interruption(e, args.file.string(), args.out.string(),
+                                             args.overrides, ranks_of(MPI_COMM_WORLD), rank == 0));
+    return e.exit_status();
+  }
   backend.finalize();
   report.cost(solver.time(), solver.steps(), particles, omp_get_wtime() - start, ppe_total);
   report.parallel(solver.row_parts(), solver.rows_shared(), decomposed);
