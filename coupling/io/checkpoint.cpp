@@ -189,6 +189,35 @@ void remove_checkpoints(const fs::path& dir, bool all) {
   for (const auto& p : doomed) remove_tree(p);
 }
 
+std::int64_t run_identity(const std::string& case_fingerprint,
+                          const std::vector<std::string>& overrides) {
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a
+  auto add = [&](const std::string& text) {
+    for (const char c : text + '\n') {
+      h ^= static_cast<unsigned char>(c);
+      h *= 1099511628211ull;
+    }
+  };
+  add(case_fingerprint);
+  for (const auto& o : overrides) {
+    std::string key = o.substr(0, o.find('='));
+    key.erase(0, key.find_first_not_of(" \t"));
+    key.erase(key.find_last_not_of(" \t") + 1);
+    if (key != "time.end") add(o);
+  }
+  return static_cast<std::int64_t>(h);
+}
+
+std::optional<std::int64_t> checkpoint_identity(const fs::path& dir) {
+  const auto all = list_checkpoints(dir);
+  if (all.empty()) return std::nullopt;
+  try {
+    return read_checkpoint_arrays(all.back().second / "rank_0.h5").integer("run_identity");
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
 std::uintmax_t directory_bytes(const fs::path& path) {
   std::uintmax_t bytes = 0;
   std::error_code ec;

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -47,6 +48,15 @@ std::filesystem::path stage_checkpoint(const std::filesystem::path& dir, long st
 std::filesystem::path commit_checkpoint(const std::filesystem::path& dir, long step, int keep);
 // Removes staged checkpoints a killed run left; with `all`, every checkpoint too (a fresh run).
 void remove_checkpoints(const std::filesystem::path& dir, bool all);
+// Which run a checkpoint belongs to: a fingerprint of the case file's (hex, as result.json's
+// case_fingerprint) and of the --set options but time.end (a resumed run may end later). Rank 0's
+// file of every checkpoint holds it as "run_identity".
+std::int64_t run_identity(const std::string& case_fingerprint,
+                          const std::vector<std::string>& overrides);
+// The run_identity of the newest checkpoint in `dir`; nothing when there is none or it cannot be
+// read.
+std::optional<std::int64_t> checkpoint_identity(const std::filesystem::path& dir);
+
 // The bytes of the files under `path` (a checkpoint's size).
 std::uintmax_t directory_bytes(const std::filesystem::path& path);
 

@@ -45,6 +45,12 @@ RunPosition Checkpoints::resume(CheckpointArrays& arrays) {
                                " was written by another number of MPI ranks than this run's " +
                                std::to_string(ranks_) + ": resume on as many ranks as ran it");
     arrays = read_checkpoint_arrays(resumed_dir_ / checkpoint_rank_file(rank_));
+    if (rank_ == 0 && arrays.integer("run_identity") != identity_)
+      throw std::runtime_error(
+          "--resume: " + resumed_dir_.string() +
+          " was written by a run of another case file (or an edited one) or with other --set "
+          "options (time.end aside): resume with the command that run printed, or run anew "
+          "without --resume");
   });
   // Rank 0's file says where the loop stood; every rank needs it.
   double v[5] = {0, 0, 0, 0, 0};
@@ -93,6 +99,7 @@ fs::path Checkpoints::write(long step, double t, RunPosition position,
       mine.set_integer("run_ppe_total", position.ppe_total);
       mine.set("run_wall_seconds", position.wall_seconds);
       mine.set_integer("run_ranks", ranks_);
+      mine.set_integer("run_identity", identity_);
       mine.set_integer("run_step", step);
       mine.set("run_time", t);
     }

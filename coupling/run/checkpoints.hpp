@@ -31,6 +31,10 @@ class Checkpoints {
   // one). comm: the ranks of the run (MPI_COMM_NULL: one process).
   Checkpoints(std::filesystem::path out, double interval, MPI_Comm comm);
 
+  // Which run this is (io/checkpoint.hpp's run_identity): written into every checkpoint, and
+  // resume() refuses a checkpoint of another.
+  void set_identity(std::int64_t identity) { identity_ = identity; }
+
   // A fresh run: rank 0 removes the checkpoints an earlier run left in the directory. Collective.
   void start_fresh();
   // --resume: reads this rank's file of the newest checkpoint into `arrays` and where the run
@@ -58,6 +62,7 @@ class Checkpoints {
   MPI_Comm comm_;
   int rank_ = 0, ranks_ = 1;
   long next_ = 1;
+  std::int64_t identity_ = 0;
   long resumed_step_ = -1;
   long last_step_ = -1;
   std::filesystem::path resumed_dir_;

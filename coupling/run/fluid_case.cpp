@@ -22,6 +22,7 @@
 #include "run/interrupt.hpp"
 #include "run/replicated_ranks.hpp"
 #include "run/run_loop.hpp"
+#include "study/run_result.hpp"
 
 namespace isphdem {
 
@@ -57,6 +58,7 @@ int run_fluid_case(const CaseFile& c, const RunArguments& args, RunReport& repor
   if (!split) check_replicas(P, solver.steps());
   const bool decomposed = run.decompose();
   Checkpoints checkpoints(args.out, settings.checkpoint_interval, MPI_COMM_WORLD);
+  checkpoints.set_identity(run_identity(case_fingerprint(c.path()), args.overrides));
   RunPosition position;
   if (args.resume) {
     CheckpointArrays saved;

@@ -149,6 +149,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   // Resumed: the fluid and the run's loop from this rank's file, the grains from LIGGGHTS's
   // restart in the checkpoint, read where the script reads its own.
   Checkpoints checkpoints(args.out, settings.checkpoint_interval, MPI_COMM_WORLD);
+  checkpoints.set_identity(run_identity(case_fingerprint(given.path()), args.overrides));
   RunPosition position;
   CheckpointArrays saved;
   if (args.resume) {

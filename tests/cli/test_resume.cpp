@@ -115,5 +115,59 @@ TEST(ResumeRefused, WithoutACheckpointItSaysSo) {
   EXPECT_NE(r.output.find("no checkpoint in " + out.string()), std::string::npos) << r.output;
 }
 
+// A study killed (SIGTERM) while its point runs: the point gets SIGTERM too (its parent died),
+// writes a checkpoint and stops "interrupted"; the study run again resumes the point from it,
+// and the point ends with the same bits as the same run never stopped.
+TEST(ResumeStudy, AKilledStudysPointResumesFromItsCheckpoint) {
+  const fs::path dir = scratch("resume_study");
+  const std::string sets =
+      "\"particles.spacing\" = 0.025\n\"output.interval\" = 0.05\n"
+      "\"output.checkpoint_interval\" = 0.1\n\"output.diagnostics_every\" = 3\n";
+  write_file(dir / "study.toml", "base = \"" + example("taylor_green_2d") + "\"\n[set]\n" + sets +
+                                     "[[points]]\nname = \"p\"\nset = { \"time.end\" = 0.4 }\n");
+  const fs::path out = dir / "out", point = out / "p";
+  const std::string study =
+      isphdem() + " study " + (dir / "study.toml").string() + " --out " + out.string() + " --quiet";
+  const Result killed =
+      run_shell("(" + study + " & pid=$!; for i in $(seq 1 30000); do " + has_checkpoint(point) +
+                " && break; kill -0 $pid 2> /dev/null || break; sleep 0.01; done; kill -TERM $pid; "
+                "wait $pid; " +
+                has_checkpoint(point) + " && for i in $(seq 1 30000); do test -e " +
+                (point / "result.json").string() + " && break; sleep 0.01; done)");
+  const std::string result = read_file(point / "result.json");
+  ASSERT_NE(result.find("\"status\": \"interrupted\""), std::string::npos)
+      << result << killed.output << read_file(point / "log.txt");
+  const Result again =
+      run_shell(isphdem() + " study " + (dir / "study.toml").string() + " --out " + out.string());
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_EQ(count(again.output, "p: resumes from its checkpoint"), 1) << again.output;
+  const auto rows = read_csv(out / "study.csv");
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].at("status"), "finished");
+
+  const Result whole = run(example("taylor_green_2d") +
+                           " --quiet --set particles.spacing=0.025 --set output.interval=0.05"
+                           " --set output.checkpoint_interval=0.1 --set output.diagnostics_every=3"
+                           " --set time.end=0.4 --out " +
+                           (dir / "ref").string());
+  ASSERT_EQ(whole.exit_code, 0) << whole.output;
+  const auto ours = files_named(point, "snap_"), theirs = files_named(dir / "ref", "snap_");
+  ASSERT_EQ(ours.size(), 9u);
+  ASSERT_EQ(theirs.size(), 9u);
+  expect_same_snapshot(theirs.back(), ours.back());
+  EXPECT_TRUE(diagnostics_without_wall(point) == diagnostics_without_wall(dir / "ref"));
+  EXPECT_EQ(xdmf_times(point), xdmf_times(dir / "ref"));
+}
+
+TEST(ResumeRefused, ACheckpointOfOtherSetOptionsIsNotTaken) {
+  const fs::path out = scratch("resume_other") / "out";
+  const Result first = run(kCase + " --set time.end=0.2 --out " + out.string());
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  const Result other = run(kCase + " --set time.end=0.4 --set fluid.viscosity=0.02 --out " +
+                           out.string() + " --resume");
+  EXPECT_NE(other.exit_code, 0);
+  EXPECT_NE(other.output.find("other --set options"), std::string::npos) << other.output;
+}
+
 }  // namespace
 }  // namespace isphdem::cli
