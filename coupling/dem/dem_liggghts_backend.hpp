@@ -43,9 +43,9 @@ class LiggghtsBackend final : public DemBackend {
   // clock starts at `time`. initialize() throws std::runtime_error when the script reads no
   // restart (the grains would be the first run's).
   void resume_from(const std::string& restart, double time);
-  // LIGGGHTS's own restart of the grains now (`write_restart`, multisphere bodies and contact
-  // histories included). LIGGGHTS re-initialises and exchanges atoms to write it, so the next
-  // advance() sets the run up again (`run N` with its setup), as after read_restart.
+  // LIGGGHTS's own restart of the grains now (as `write_restart` writes it: multisphere bodies
+  // and contact histories included), without touching the run: the next substeps go on as they
+  // would have without it.
   void write_restart(const std::string& file);
 
   // One LIGGGHTS command, e.g. for tests and diagnostics.
@@ -64,7 +64,6 @@ class LiggghtsBackend final : public DemBackend {
   DemState state_;
   bool state_stale_ = true;
   bool ran_ = false;            // a run command has set LIGGGHTS up since initialize()
-  bool setup_ = false;          // the next advance() sets the run up (after write_restart)
   std::string resume_restart_;  // resume_from()'s restart, read in place of the script's
   double resume_time_ = 0.0;
 };
