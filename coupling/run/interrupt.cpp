@@ -40,8 +40,12 @@ InterruptHandlers::InterruptHandlers() {
   action.sa_handler = note_signal;
   sigemptyset(&action.sa_mask);
   action.sa_flags = SA_RESTART;  // a write under way goes on
-  sigaction(SIGINT, &action, &previous_int);
-  sigaction(SIGTERM, &action, &previous_term);
+  // A signal the run was started ignoring (SIGINT for a background job of a script, nohup) stays
+  // ignored.
+  sigaction(SIGINT, nullptr, &previous_int);
+  sigaction(SIGTERM, nullptr, &previous_term);
+  if (previous_int.sa_handler != SIG_IGN) sigaction(SIGINT, &action, nullptr);
+  if (previous_term.sa_handler != SIG_IGN) sigaction(SIGTERM, &action, nullptr);
 }
 
 InterruptHandlers::~InterruptHandlers() {

@@ -12,7 +12,8 @@
 
 namespace isphdem {
 
-// Installs the handlers for its lifetime (the previous ones come back after).
+// Installs the handlers for its lifetime (the previous ones come back after); a signal the process
+// was started ignoring stays ignored.
 class InterruptHandlers {
  public:
   InterruptHandlers();

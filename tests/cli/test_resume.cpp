@@ -84,6 +84,20 @@ TEST_F(Resume, SigtermWritesACheckpointAndTheResumedRunEqualsOneRun) {
   expect_same_as_reference(out);
 }
 
+TEST_F(Resume, CtrlCEndsTheRunAsSigtermDoesWithStatus130) {
+  const fs::path out = scratch("resume_sigint") / "out";
+  // A background job of a script starts with SIGINT ignored (and a run keeps ignoring what it was
+  // started ignoring): env gives it back its default first, as a terminal's foreground job has.
+  const Result stopped = run_and_signal(out, kCase + " --set time.end=0.4", "INT",
+                                        has_checkpoint(out), "env --default-signal=INT ");
+  ASSERT_EQ(stopped.exit_code, 130) << stopped.output;  // 128 + SIGINT
+  EXPECT_NE(stopped.output.find("interrupted by SIGINT"), std::string::npos) << stopped.output;
+  EXPECT_NE(read_file(out / "result.json").find("\"status\": \"interrupted\""), std::string::npos);
+  const Result resumed = run(kCase + " --set time.end=0.4 --out " + out.string() + " --resume");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  expect_same_as_reference(out);
+}
+
 TEST_F(Resume, AfterAHardKillTheRowsAndSnapshotsPastTheCheckpointAreWrittenOnce) {
   const fs::path out = scratch("resume_kill") / "out";
   // Killed once the snapshot of t = 0.15 s (step 24) is written, after the checkpoint of t = 0.1
