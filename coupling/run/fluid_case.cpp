@@ -64,6 +64,9 @@ int run_fluid_case(const CaseFile& c, const RunArguments& args, RunReport& repor
     CheckpointArrays saved;
     position = checkpoints.resume(saved);
     restore_fluid(solver, saved);
+    if (talk)
+      std::printf("isphdem run: resuming from %s (t = %g s, step %ld)\n",
+                  checkpoints.resumed_directory().string().c_str(), solver.time(), solver.steps());
   }
   // Over all ranks when decomposed (collective): the counts, the limits and the first step.
   std::array<double, 3> count{double(P.count(isph::kFluid)), double(P.count(isph::kWall)),

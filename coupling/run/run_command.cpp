@@ -217,6 +217,9 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     restore_fluid(solver, saved);
     run.restore(with_prefix(saved, "coupled_"));
     erosion.restore(saved.real_array("erosion_layer"));
+    if (talk)
+      std::printf("isphdem run: resuming from %s (t = %g s, step %ld)\n",
+                  checkpoints.resumed_directory().string().c_str(), solver.time(), solver.steps());
   }
   SnapshotWriter writer(args.out, !args.resume, MPI_COMM_WORLD);
   if (args.resume)
