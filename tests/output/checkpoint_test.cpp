@@ -20,8 +20,12 @@ namespace fs = std::filesystem;
 TEST(Checkpoint, ArraysReadBackWithTheSameBits) {
   const auto file = scratch_dir() / "rank_0.h5";
   CheckpointArrays a;
-  a.reals["x"] = {0.1, -0.0, 1e-310, std::numeric_limits<double>::max(),
-                  std::numeric_limits<double>::quiet_NaN(), -INFINITY};
+  a.reals["x"] = {0.1,
+                  -0.0,
+                  1e-310,
+                  std::numeric_limits<double>::max(),
+                  std::numeric_limits<double>::quiet_NaN(),
+                  -INFINITY};
   a.reals["empty"] = {};
   a.set("time", 0.30000000000000004);
   a.integers["id"] = {0, -1, std::numeric_limits<std::int64_t>::max()};
