@@ -124,5 +124,21 @@ TEST_F(ResumeCoupled, AfterSigtermItEndsWithinAMicrometre) {
   expect_close_to(out, dir_ / "ref");
 }
 
+// The settling grain's script creates its grain (no read_restart): its checkpoints cannot be
+// resumed, which --resume says, leaving the output as it was.
+TEST(ResumeCoupledRefused, AScriptThatReadsNoRestartIsRefused) {
+  const fs::path out = scratch("resume_coupled_no_restart") / "out";
+  const std::string grain = example("settling_grain") + " --quiet";
+  const Result first = run(grain + " --set time.end=0.01 --out " + out.string());
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  ASSERT_FALSE(files_named(out, "checkpoint_").empty());
+  const auto snapshots = files_named(out, "snap_");
+  const Result again = run(grain + " --set time.end=0.02 --out " + out.string() + " --resume");
+  EXPECT_NE(again.exit_code, 0);
+  EXPECT_NE(again.output.find("reads no restart (read_restart)"), std::string::npos)
+      << again.output;
+  EXPECT_EQ(files_named(out, "snap_"), snapshots);
+}
+
 }  // namespace
 }  // namespace isphdem::cli
