@@ -203,7 +203,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     std::fflush(stdout);
   }
   check_replicas(P, solver.steps());  // the ranks start from the same fluid
-  const long particles = long(P.size());
+  long particles = long(P.size());
   const bool decomposed = run.decompose();
   // Grain density for the mass of ejected fines: that of the clumps when there are any (the
   // DEM state has no per-atom mass).
@@ -217,6 +217,9 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     restore_fluid(solver, saved);
     run.restore(with_prefix(saved, "coupled_"));
     erosion.restore(saved.real_array("erosion_layer"));
+    // The first run's count (its bodies' PMS particles were made at their first poses).
+    const isph::RowShare* d = solver.decomposition();
+    particles = long(d ? d->sum(double(P.size())) : double(P.size()));
     if (talk)
       std::printf("isphdem run: resuming from %s (t = %g s, step %ld)\n",
                   checkpoints.resumed_directory().string().c_str(), solver.time(), solver.steps());
