@@ -18,6 +18,7 @@
 #ifndef ISPHDEM_COUPLING_STAGE_HPP
 #define ISPHDEM_COUPLING_STAGE_HPP
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,10 @@ inline Vec3 total_force(const DemLoads& loads) {
   return f;
 }
 
+// What a stage keeps from one step to the next that its case and the DEM state do not give again
+// (a checkpoint's part, docs/output.md): named arrays of numbers.
+using StageState = std::map<std::string, std::vector<double>>;
+
 template <int Dim>
 class CouplingStage {
  public:
@@ -59,6 +64,11 @@ class CouplingStage {
   virtual void before_fluid_step(const DemState& dem, isph::IsphSolver<Dim>& solver) = 0;
   virtual void after_fluid_step(const DemState& dem, const isph::IsphSolver<Dim>& solver, double dt,
                                 DemLoads& loads) = 0;
+  // Between two steps: saves what the stage carries over (nothing by default), and puts it back
+  // in a stage initialize()d for the same case when a run resumes (std::runtime_error when
+  // `state` does not fit it).
+  virtual void save(StageState& /*state*/) const {}
+  virtual void restore(const StageState& /*state*/) {}
 };
 
 }  // namespace isphdem

@@ -111,6 +111,42 @@ void IsphSolver<Dim>::redistribute() {
 }
 
 template <int Dim>
+StepCarry<Dim> IsphSolver<Dim>::carry() const {
+  StepCarry<Dim> c;
+  c.time = time_;
+  c.steps = steps_;
+  c.max_eddy_viscosity = max_eddy_viscosity_;
+  c.surface_top = surface_top_;
+  c.gravity = config_.gravity;
+  c.unit_response.assign(unit_response_.data(), unit_response_.data() + unit_response_.size());
+  c.unit_response_pin = unit_response_pin_;
+  c.unit_response_lambda = unit_response_lambda_;
+  c.have_q = have_q_;
+  return c;
+}
+
+template <int Dim>
+void IsphSolver<Dim>::resume(Particles<Dim> particles, const StepCarry<Dim>& c) {
+  if (particles.spacing != particles_.spacing)
+    throw SimulationError("resume: the saved particles have spacing " +
+                          format_number(particles.spacing, 6) + " m, the case " +
+                          format_number(particles_.spacing, 6) +
+                          " m: resume with the case and --set options of the run");
+  particles_ = std::move(particles);
+  time_ = c.time;
+  steps_ = c.steps;
+  max_eddy_viscosity_ = c.max_eddy_viscosity;
+  surface_top_ = c.surface_top;
+  config_.gravity = c.gravity;
+  unit_response_ = Eigen::Map<const Eigen::VectorXd>(c.unit_response.data(),
+                                                     Eigen::Index(c.unit_response.size()));
+  unit_response_pin_ = c.unit_response_pin;
+  unit_response_lambda_ = c.unit_response_lambda;
+  have_q_ = c.have_q;
+  redistributed_ = false;
+}
+
+template <int Dim>
 double IsphSolver<Dim>::max_speed() const {
   double m = 0.0;
   for (std::size_t i = 0; i < particles_.size(); ++i)

@@ -27,6 +27,7 @@
 #include "pressure_equation.hpp"
 #include "row_share.hpp"
 #include "shifting.hpp"
+#include "step_carry.hpp"
 #include "stopwatch.hpp"
 #include "time_step.hpp"
 
@@ -171,6 +172,12 @@ class IsphSolver {
   double max_speed() const;
   const StepTimings& timings() const { return timings_; }
   const PorousMedium<Dim>& porous() const { return porous_; }
+  // Between steps: what the next step reads besides the particles (a checkpoint's part), and
+  // putting it back with the particles saved with it. resume() expects the solver built from the
+  // same case (and decomposed alike, each process given the particles it held); the particles
+  // replace this process's, in their saved order.
+  StepCarry<Dim> carry() const;
+  void resume(Particles<Dim> particles, const StepCarry<Dim>& carry);
   // Body acceleration for the coming steps (a flow-rate drive adjusts it between steps).
   void set_gravity(const Vec<Dim>& g) { config_.gravity = g; }
   // Shares the rows of every step between the processes of `share` (sph/row_share.hpp). Takes

@@ -1,6 +1,7 @@
 #pragma once
 // Structure-of-arrays particle storage. Every per-particle array is listed in for_each_array so
-// that re-sorting (for cache locality) and appending can never forget one.
+// that re-sorting (for cache locality) and appending can never forget one, nor a checkpoint (which
+// names each: coupling/run/fluid_checkpoint.cpp, refusing to write when one is new to it).
 #include <cstdint>
 #include <vector>
 

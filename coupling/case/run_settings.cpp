@@ -3,8 +3,15 @@
 namespace isphdem {
 
 std::vector<std::string> run_settings_keys() {
-  return {"time.end",          "time.dt",    "time.max_dt",     "time.cfl",
-          "time.viscous",      "time.force", "output.interval", "output.diagnostics_every",
+  return {"time.end",
+          "time.dt",
+          "time.max_dt",
+          "time.cfl",
+          "time.viscous",
+          "time.force",
+          "output.interval",
+          "output.diagnostics_every",
+          "output.checkpoint_interval",
           "parallel.decompose"};
 }
 
@@ -31,6 +38,12 @@ RunSettings parse_run_settings(const CaseFile& c) {
   s.output_interval = c.positive("output.interval", s.t_end / 10.0);
   s.diagnostics_every = c.integer("output.diagnostics_every", s.diagnostics_every);
   if (s.diagnostics_every < 1) throw CaseError("'output.diagnostics_every' must be at least 1");
+  s.checkpoint_interval =
+      c.has("output.checkpoint_interval") ? c.number("output.checkpoint_interval") : s.t_end / 4.0;
+  if (!(s.checkpoint_interval >= 0.0))
+    throw CaseError(
+        "'output.checkpoint_interval' must be 0 (no checkpoints) or a positive number "
+        "of simulated seconds");
   if (c.has("parallel.decompose")) s.decompose = c.boolean("parallel.decompose", true);
   return s;
 }

@@ -16,6 +16,9 @@ struct RunSettings {
   isph::TimeStepParams limits;
   double output_interval = 0.0;  // simulated seconds between snapshots
   long diagnostics_every = 10;   // steps between diagnostics rows
+  // output.checkpoint_interval: simulated seconds between checkpoints (docs/output.md); 0 writes
+  // none but an interrupted run's. Default: t_end / 4.
+  double checkpoint_interval = 0.0;
   // A coupled run: its fixed step is [dem] substeps x the DEM step and cannot be "auto", which
   // the advice for a time step beyond the stable limit must say.
   bool coupled = false;

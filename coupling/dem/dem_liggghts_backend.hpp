@@ -38,6 +38,16 @@ class LiggghtsBackend final : public DemBackend {
   double timestep() const override;
   void finalize() override;
 
+  // Resuming a run (docs/output.md, "Checkpoints and --resume"): call before initialize(); the
+  // script's `read_restart` then reads `restart` (liggghts_restart_redirect.hpp), and its DEM
+  // clock starts at `time`. initialize() throws std::runtime_error when the script reads no
+  // restart (the grains would be the first run's).
+  void resume_from(const std::string& restart, double time);
+  // LIGGGHTS's own restart of the grains now (as `write_restart` writes it: multisphere bodies
+  // and contact histories included), without touching the run: the next substeps go on as they
+  // would have without it.
+  void write_restart(const std::string& file);
+
   // One LIGGGHTS command, e.g. for tests and diagnostics.
   void command(const std::string& line);
   LAMMPS_NS::LAMMPS* lammps() { return lmp_.get(); }
@@ -53,7 +63,9 @@ class LiggghtsBackend final : public DemBackend {
   LammpsHandle lmp_;
   DemState state_;
   bool state_stale_ = true;
-  bool ran_ = false;  // a run command has set LIGGGHTS up since initialize()
+  bool ran_ = false;            // a run command has set LIGGGHTS up since initialize()
+  std::string resume_restart_;  // resume_from()'s restart, read in place of the script's
+  double resume_time_ = 0.0;
 };
 
 }  // namespace isphdem

@@ -1,5 +1,6 @@
 #include "io/diagnostics_writer.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -39,9 +40,28 @@ std::string complete_lines(const fs::path& path) {
   return end == std::string::npos ? std::string() : text.substr(0, end + 1);
 }
 
+// The lines of `text` (header first) whose value in column `column` is at most `step`.
+std::string rows_through(const std::string& text, std::size_t column, long step) {
+  std::string kept;
+  std::size_t at = 0;
+  for (bool header = true; at < text.size(); header = false) {
+    const std::size_t end = text.find('\n', at);
+    const std::string line = text.substr(at, end - at + 1);
+    at = end + 1;
+    std::size_t field = 0;
+    for (std::size_t k = 0; k < column && field != std::string::npos; ++k)
+      field = line.find(',', field) == std::string::npos ? std::string::npos
+                                                         : line.find(',', field) + 1;
+    if (header || (field != std::string::npos && std::stod(line.substr(field)) <= double(step)))
+      kept += line;
+  }
+  return kept;
+}
+
 }  // namespace
 
-DiagnosticsWriter::DiagnosticsWriter(fs::path path, std::vector<std::string> columns, bool append)
+DiagnosticsWriter::DiagnosticsWriter(fs::path path, std::vector<std::string> columns, bool append,
+                                     long through_step)
     : path_(std::move(path)), columns_(std::move(columns)) {
   if (columns_.empty()) throw std::invalid_argument("diagnostics: no columns");
   std::set<std::string> seen;
@@ -60,6 +80,9 @@ DiagnosticsWriter::DiagnosticsWriter(fs::path path, std::vector<std::string> col
     if (!existing.empty() && existing.compare(0, header.size(), header) != 0)
       throw std::runtime_error("diagnostics: " + path_.string() +
                                " has a different header; cannot append");
+    const auto step = std::find(columns_.begin(), columns_.end(), "step");
+    if (!existing.empty() && through_step >= 0 && step != columns_.end())
+      existing = rows_through(existing, std::size_t(step - columns_.begin()), through_step);
   }
   // Rewriting the kept lines (rather than opening for append) is what drops a partial last line.
   file_ = std::fopen(path_.c_str(), "w");

@@ -16,8 +16,10 @@ class DiagnosticsWriter {
   // comma/quote/newline-containing column name; std::runtime_error if the file cannot be written).
   // append: continue an existing file instead, which must have exactly this header (a partial
   //   last line left by a crash is dropped); a missing or empty file is started afresh.
+  // through_step (with append, a run resumed from its checkpoint at that step): rows whose
+  //   "step" column is larger are dropped, so that the continuation writes each step once.
   DiagnosticsWriter(std::filesystem::path path, std::vector<std::string> columns,
-                    bool append = false);
+                    bool append = false, long through_step = -1);
   ~DiagnosticsWriter();
   DiagnosticsWriter(const DiagnosticsWriter&) = delete;
   DiagnosticsWriter& operator=(const DiagnosticsWriter&) = delete;

@@ -315,6 +315,13 @@ void SnapshotWriter::drop_steps_after(long step) {
   }
 }
 
+void SnapshotWriter::resume_after(long step) {
+  agree(comm_, [&] {
+    if (lead_) drop_steps_after(step);
+  });
+  written_ = true;
+}
+
 void SnapshotWriter::update_xdmf(const std::string& group) {
   const fs::path path = dir_ / (group + ".xdmf");
   std::vector<XdmfStep> steps;

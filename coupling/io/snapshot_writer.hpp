@@ -40,6 +40,10 @@ class SnapshotWriter {
   // written.
   std::filesystem::path write(const Snapshot& snapshot);
 
+  // Continuing from a checkpoint at `step` (!fresh): removes the snapshots after it, which the
+  // continuation writes again, so that the .xdmf lists each time once. Collective.
+  void resume_after(long step);
+
   const std::filesystem::path& directory() const { return dir_; }
 
   static std::string file_name(long step);  // "snap_00001200.h5"

@@ -306,6 +306,53 @@ void ResolvedCoupling<Dim>::after_fluid_step(const DemState& dem,
   }
 }
 
+template <int Dim>
+void ResolvedCoupling<Dim>::save(StageState& state) const {
+  auto& bodies = state["bodies"];  // per body: id, particles, dem_volume, fluid_volume, scale,
+  bodies.clear();                  // the 9 entries of the initial rotation, the centroid offset
+  for (std::size_t b = 0; b < info_.size(); ++b) {
+    const BodyInfo& i = info_[b];
+    bodies.insert(bodies.end(),
+                  {double(i.id), double(i.particles), i.dem_volume, i.fluid_volume, i.scale});
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) bodies.push_back(initial_rotation_[b](r, c));
+    for (int a = 0; a < Dim; ++a) bodies.push_back(centroid_offset_[b][a]);
+  }
+  state["removed"] = {double(removed_)};
+}
+
+template <int Dim>
+void ResolvedCoupling<Dim>::restore(const StageState& state) {
+  constexpr std::size_t per_body = 5 + 9 + Dim;
+  const auto bodies = state.find("bodies"), removed = state.find("removed");
+  if (bodies == state.end() || removed == state.end() || removed->second.size() != 1 ||
+      bodies->second.size() % per_body != 0)
+    throw std::runtime_error("resolved coupling: the checkpoint holds no bodies of this dimension");
+  const std::vector<double>& v = bodies->second;
+  info_.clear();
+  index_.clear();
+  initial_rotation_.clear();
+  centroid_offset_.clear();
+  for (std::size_t at = 0; at < v.size(); at += per_body) {
+    BodyInfo i;
+    i.id = int(v[at]);
+    i.particles = std::size_t(v[at + 1]);
+    i.dem_volume = v[at + 2];
+    i.fluid_volume = v[at + 3];
+    i.scale = v[at + 4];
+    index_[i.id] = int(info_.size());
+    info_.push_back(i);
+    Eigen::Matrix3d r;
+    for (int row = 0; row < 3; ++row)
+      for (int c = 0; c < 3; ++c) r(row, c) = v[at + 5 + 3 * row + c];
+    initial_rotation_.push_back(r);
+    isph::Vec<Dim> offset;
+    for (int a = 0; a < Dim; ++a) offset[a] = v[at + 14 + a];
+    centroid_offset_.push_back(offset);
+  }
+  removed_ = std::size_t(removed->second[0]);
+}
+
 template class ResolvedCoupling<2>;
 template class ResolvedCoupling<3>;
 

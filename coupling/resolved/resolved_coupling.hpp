@@ -57,6 +57,11 @@ class ResolvedCoupling : public CouplingStage<Dim> {
   void before_fluid_step(const DemState&, isph::IsphSolver<Dim>&) override {}
   void after_fluid_step(const DemState& dem, const isph::IsphSolver<Dim>& solver, double dt,
                         DemLoads& loads) override;
+  // The bodies as initialize() found them (their PMS particles' count, volume and scale, the
+  // orientation and PMS centroid of that moment): a resumed run's initialize() sees the bodies
+  // where the checkpoint left them, and restore() puts the first run's back.
+  void save(StageState& state) const override;
+  void restore(const StageState& state) override;
 
   struct BodyInfo {
     int id = 0;                 // DEM body id

@@ -163,6 +163,70 @@ void CoupledRun<Dim>::run_until(double t,
   }
 }
 
+namespace {
+
+void put_vectors(StageState& s, const std::string& name, const std::vector<Vec3>& v) {
+  auto& out = s[name];
+  out.clear();
+  for (const Vec3& x : v) out.insert(out.end(), x.begin(), x.end());
+}
+
+const std::vector<double>& entry(const StageState& s, const std::string& name) {
+  const auto it = s.find(name);
+  if (it == s.end())
+    throw std::runtime_error("coupled run: the checkpoint holds no '" + name + "'");
+  return it->second;
+}
+
+std::vector<Vec3> get_vectors(const StageState& s, const std::string& name, std::size_t n) {
+  const std::vector<double>& v = entry(s, name);
+  if (v.size() != 3 * n)
+    throw std::runtime_error("coupled run: '" + name + "' does not fit its ids");
+  std::vector<Vec3> out(n);
+  for (std::size_t k = 0; k < n; ++k) out[k] = {v[3 * k], v[3 * k + 1], v[3 * k + 2]};
+  return out;
+}
+
+}  // namespace
+
+template <int Dim>
+void CoupledRun<Dim>::save(StageState& s) const {
+  s["atom_tags"].assign(loads_.atom_tags.begin(), loads_.atom_tags.end());
+  put_vectors(s, "atom_force", loads_.atom_force);
+  put_vectors(s, "atom_torque", loads_.atom_torque);
+  s["body_ids"].assign(loads_.body_ids.begin(), loads_.body_ids.end());
+  put_vectors(s, "body_force", loads_.body_force);
+  put_vectors(s, "body_torque", loads_.body_torque);
+  s["max_overlap"] = {max_overlap_};
+  s["energy"] = energy_.state();
+  for (std::size_t k = 0; k < stages_.size(); ++k) {
+    StageState own;
+    stages_[k]->save(own);
+    for (auto& [name, v] : own) s["stage" + std::to_string(k) + "_" + name] = std::move(v);
+  }
+}
+
+template <int Dim>
+void CoupledRun<Dim>::restore(const StageState& s) {
+  DemLoads l;
+  for (double t : entry(s, "atom_tags")) l.atom_tags.push_back(int(t));
+  l.atom_force = get_vectors(s, "atom_force", l.atom_tags.size());
+  l.atom_torque = get_vectors(s, "atom_torque", l.atom_tags.size());
+  for (double b : entry(s, "body_ids")) l.body_ids.push_back(int(b));
+  l.body_force = get_vectors(s, "body_force", l.body_ids.size());
+  l.body_torque = get_vectors(s, "body_torque", l.body_ids.size());
+  loads_ = std::move(l);
+  max_overlap_ = entry(s, "max_overlap").at(0);
+  energy_.restore(entry(s, "energy"));
+  for (std::size_t k = 0; k < stages_.size(); ++k) {
+    const std::string prefix = "stage" + std::to_string(k) + "_";
+    StageState own;
+    for (const auto& [name, v] : s)
+      if (name.compare(0, prefix.size(), prefix) == 0) own[name.substr(prefix.size())] = v;
+    stages_[k]->restore(own);
+  }
+}
+
 template class CoupledRun<2>;
 template class CoupledRun<3>;
 

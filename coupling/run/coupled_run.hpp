@@ -49,6 +49,12 @@ class CoupledRun {
   const CoupledTimings& timings() const { return timings_; }
   // The deepest overlap of two grains after the last step, a fraction of the smaller radius.
   double max_overlap() const { return max_overlap_; }
+  // Between two steps (a checkpoint's part, docs/output.md): the loads handed to the DEM in the
+  // last step (what the output reports for it), the deepest overlap, the energy monitor's
+  // windows, and every stage's own state ("stage<k>_<name>"). restore() puts back what save()
+  // gave, into a run built for the same case; the fluid and the DEM are restored apart.
+  void save(StageState& state) const;
+  void restore(const StageState& state);
 
  private:
   FluidRun<Dim> fluid_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace isphdem {
 
@@ -34,6 +35,18 @@ std::optional<EnergyGrowth> EnergyGrowthMonitor::observe(double q) {
   growing_ = growing ? growing_ + 1 : 0;
   if (growing_ < window_) return std::nullopt;
   return EnergyGrowth{before, now};
+}
+
+std::vector<double> EnergyGrowthMonitor::state() const {
+  std::vector<double> s(history_.begin(), history_.end());
+  s.push_back(double(growing_));
+  return s;
+}
+
+void EnergyGrowthMonitor::restore(const std::vector<double>& state) {
+  if (state.empty()) throw std::runtime_error("energy growth: an empty checkpoint state");
+  history_.assign(state.begin(), state.end() - 1);
+  growing_ = int(state.back());
 }
 
 }  // namespace isphdem

@@ -20,6 +20,7 @@
 
 #include <deque>
 #include <optional>
+#include <vector>
 
 #include "dem_state.hpp"
 
@@ -43,6 +44,10 @@ class EnergyGrowthMonitor {
                                double factor = kEnergyGrowthFactor);
   // Feeds the value after one more step; the growth once it has held for a window of steps.
   std::optional<EnergyGrowth> observe(double mean_square_speed);
+  // What it has seen (a checkpoint's part): the values of the last windows, then the count of
+  // growing steps; restore() takes what state() gave.
+  std::vector<double> state() const;
+  void restore(const std::vector<double>& state);
 
  private:
   double floor2_;

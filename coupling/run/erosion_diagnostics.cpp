@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace isphdem {
 
@@ -42,6 +43,26 @@ ErosionDiagnostics<Dim>::ErosionDiagnostics(const DemState& initial, const Vec3&
     hi0_ = std::max(hi0_, a.x[h] + a.radius);
   }
   for (const auto& b : initial.bodies) body0_[b.id] = b.x;
+}
+
+template <int Dim>
+std::vector<double> ErosionDiagnostics<Dim>::state() const {
+  std::vector<double> s{surface0_, bottom0_, lo0_, hi0_};
+  for (const auto& [id, x] : body0_) s.insert(s.end(), {double(id), x[0], x[1], x[2]});
+  return s;
+}
+
+template <int Dim>
+void ErosionDiagnostics<Dim>::restore(const std::vector<double>& s) {
+  if (s.size() < 4 || (s.size() - 4) % 4 != 0)
+    throw std::runtime_error("erosion diagnostics: the checkpoint holds no initial layer");
+  surface0_ = s[0];
+  bottom0_ = s[1];
+  lo0_ = s[2];
+  hi0_ = s[3];
+  body0_.clear();
+  for (std::size_t k = 4; k < s.size(); k += 4)
+    body0_[int(s[k])] = Vec3{s[k + 1], s[k + 2], s[k + 3]};
 }
 
 template <int Dim>

@@ -45,6 +45,10 @@ class ErosionDiagnostics {
   static std::vector<double> row(const ErosionMeasures& m);
 
   double initial_surface() const { return surface0_; }
+  // The initial layer it measures against (a checkpoint's part: a resumed run starts from later
+  // grains); restore() takes what state() gave.
+  std::vector<double> state() const;
+  void restore(const std::vector<double>& state);
 
  private:
   double height(const Vec3& x) const { return x[0] * up_[0] + x[1] * up_[1] + x[2] * up_[2]; }

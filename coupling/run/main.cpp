@@ -34,7 +34,8 @@ struct Subcommand {
 int study(int argc, char** argv) { return isphdem::study_main(argc, argv, isphdem::case_keys()); }
 
 const Subcommand kSubcommands[] = {
-    {"run", isphdem::run_main, "isphdem run CASE.toml --out DIR [--set key=value ...]", true},
+    {"run", isphdem::run_main, "isphdem run CASE.toml --out DIR [--set key=value ...] [--resume]",
+     true},
     {"dem", isphdem::dem_main,
      "isphdem dem SCRIPT [-var NAME VALUE ...] [-log FILE] [-screen FILE]", true},
     {"study", study, "isphdem study STUDY.toml --out DIR [-j N] [--set key=value ...]", false},

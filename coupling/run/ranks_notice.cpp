@@ -1,5 +1,7 @@
 #include "run/ranks_notice.hpp"
 
+#include <cstdio>
+
 namespace isphdem {
 
 RanksNotice ranks_notice(int ranks, bool decomposed, const std::string& preconditioner) {
@@ -21,6 +23,15 @@ RanksNotice ranks_notice(int ranks, bool decomposed, const std::string& precondi
                 "to share it over the ranks";
   }
   return n;
+}
+
+void say_ranks(const RanksNotice& n, int rank, bool talk) {
+  if (talk && !n.header.empty()) std::printf("  %s\n", n.header.c_str());
+  if (talk) std::fflush(stdout);
+  if (rank == 0 && !n.warning.empty()) {
+    std::fprintf(stderr, "isphdem run: warning: %s\n", n.warning.c_str());
+    std::fflush(stderr);
+  }
 }
 
 }  // namespace isphdem

@@ -16,4 +16,8 @@ struct RanksNotice {
 // preconditioner: solver.preconditioner; "amg" shares the rows of a fluid held by every rank.
 RanksNotice ranks_notice(int ranks, bool decomposed, const std::string& preconditioner);
 
+// The header's line on the ranks (when it talks) and the warning of a replicated fluid (rank 0,
+// on stderr, even with --quiet); flushes the header.
+void say_ranks(const RanksNotice& n, int rank, bool talk);
+
 }  // namespace isphdem

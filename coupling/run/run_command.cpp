@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
@@ -25,14 +27,19 @@
 #include "io/diagnostics_writer.hpp"
 #include "io/fluid_snapshot.hpp"
 #include "io/progress_line.hpp"
+#include "io/rank_agreement.hpp"
 #include "io/snapshot_writer.hpp"
 #include "run/auto_model.hpp"
 #include "run/case_keys.hpp"
+#include "run/checkpoints.hpp"
 #include "run/coupled_run.hpp"
 #include "run/coupling_stages.hpp"
 #include "run/dem_only_run.hpp"
 #include "run/erosion_diagnostics.hpp"
+#include "run/fluid_case.hpp"
+#include "run/fluid_checkpoint.hpp"
 #include "run/fluid_run.hpp"
+#include "run/interrupt.hpp"
 #include "run/ranks_notice.hpp"
 #include "run/replicated_ranks.hpp"
 #include "run/run_loop.hpp"
@@ -47,146 +54,27 @@ namespace fs = std::filesystem;
 namespace {
 
 const char* kUsage =
-    "usage: isphdem run CASE.toml --out DIR [--set key=value ...] [--quiet]\n"
+    "usage: isphdem run CASE.toml --out DIR [--set key=value ...] [--quiet] [--resume]\n"
     "  --out DIR        output directory (snap_<step>.h5, *.xdmf, diagnostics.csv, result.json);\n"
     "                   results of an earlier run there are replaced\n"
     "  --set key=value  override a case key, e.g. --set time.end=0.2 (repeatable)\n"
-    "  --quiet          no progress line and no summary\n";
+    "  --quiet          no progress line and no summary\n"
+    "  --resume         continue from the newest checkpoint in DIR (same case, --set and ranks;\n"
+    "                   time.end may be later)\n";
 
-using Arguments = VerbArguments;
+using Arguments = RunArguments;
 
-// The header's line on the ranks (when it talks) and the warning of a replicated fluid (rank 0,
-// on stderr, even with --quiet); flushes the header.
-void say_ranks(const RanksNotice& n, int rank, bool talk) {
-  if (talk && !n.header.empty()) std::printf("  %s\n", n.header.c_str());
-  if (talk) std::fflush(stdout);
-  if (rank == 0 && !n.warning.empty()) {
-    std::fprintf(stderr, "isphdem run: warning: %s\n", n.warning.c_str());
-    std::fflush(stderr);
-  }
-}
+// LIGGGHTS's restart in a coupled run's checkpoint directory.
+const char* const kDemRestart = "dem.restart";
+// coupling.model as a checkpoint stores it ("coupled_model": the index here), for "auto".
+const char* const kModels[] = {"unresolved", "resolved", "semi-resolved"};
 
-// A fluid-only case. On several ranks (mpirun) with solver.preconditioner = "amg" each rank holds
-// and steps its own part of the fluid (FluidRun::decompose), the pressure equation one system
-// over the ranks; with parallel.decompose = false every rank holds all particles and computes
-// its block of rows. The ranks write each snapshot together (each its own rows); rank 0 talks and
-// writes diagnostics.csv.
-template <int Dim>
-int run_case(const CaseFile& c, const Arguments& args, RunReport& report) {
-  int rank = 0, ranks = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  const bool talk = rank == 0 && !args.quiet;
-  const RunSettings settings = parse_run_settings(c);
-  // Decomposed from the start: each rank builds only its share of the particles, and no rank
-  // ever holds the whole fluid. The checks of the scene then see a rank's share: every rank
-  // stops with the first failing rank's message.
-  const bool split = FluidRun<Dim>::decomposes(
-      settings, c.string("solver.preconditioner", isph::LinearSolverConfig{}.preconditioner),
-      ranks);
-  FluidScene<Dim> scene;
-  agree_on_failure(split, [&] {
-    scene = build_fluid_scene<Dim>(c, rank, split ? ranks : 1);
-    isph::IsphSolver<Dim>::check_inside(scene.particles, scene.domain);
-  });
-  FluidRun<Dim> run(std::move(scene), settings);  // collective when split (decomposed at once)
-  auto& solver = run.solver();
-  const auto& P = solver.particles();
-  // The ranks must start from the same fluid, whether or not they then keep only their part.
-  if (!split) check_replicas(P, solver.steps());
-  const bool decomposed = run.decompose();
-  // Over all ranks when decomposed (collective): the counts, the limits and the first step.
-  std::array<double, 3> count{double(P.count(isph::kFluid)), double(P.count(isph::kWall)),
-                              double(P.size())};
-  if (const isph::RowShare* d = solver.decomposition()) d->sum_in_place(count.data(), 3);
-  const long particles = long(count[2]);
-  const auto l = solver.limits();
-  const double first_dt = run.next_dt();
-
-  if (talk) {
-    std::printf("isphdem run: %s (%dD)\n  particles: %.0f fluid, %.0f wall; dx = %g m, h = %g m\n",
-                c.path().string().c_str(), Dim, count[0], count[1], P.spacing, solver.kernel().h());
-    if (settings.fixed_dt)
-      std::printf("  time step: fixed %g s (stable limit now %g s, %s)\n", *settings.fixed_dt,
-                  l.min(), l.limiting().c_str());
-    else
-      std::printf("  time step: auto, now %g s (%s limit; CFL %g, viscous %g, force %g s)\n",
-                  first_dt, l.limiting().c_str(), l.cfl, l.viscous, l.force);
-    std::printf("  output: %s every %g s to t = %g s\n", args.out.string().c_str(),
-                settings.output_interval, settings.t_end);
-  }
-  say_ranks(ranks_notice(ranks, decomposed, solver.config().pressure_solver.preconditioner), rank,
-            talk);
-
-  const std::vector<std::string> columns{
-      "time",           "step",         "wall_seconds",      "ppe_iterations",
-      "max_speed",      "dt",           "ppe_residual",      "surface_particles",
-      "kinetic_energy", "fluid_volume", "max_eddy_viscosity"};
-  report.check_columns(columns);  // before the writer clears an earlier run's output
-  SnapshotWriter writer(args.out, true, MPI_COMM_WORLD);
-  std::unique_ptr<DiagnosticsWriter> diagnostics;
-  if (rank == 0) {
-    // The case as run, overrides applied, next to the results.
-    std::ofstream f(args.out / "case_used.toml");
-    f << "# " << c.path().string() << " with the overrides of this run\n" << c.table() << "\n";
-    diagnostics = std::make_unique<DiagnosticsWriter>(args.out / "diagnostics.csv", columns);
-  }
-  auto snapshot = [&]() {
-    if (!decomposed) check_replicas(P, solver.steps());
-    write_collectively(rank, [&] {
-      Snapshot s;
-      s.step = solver.steps();
-      s.time = solver.time();
-      const auto [first, last] = solver.own_block();
-      add_fluid_group(P, s, first, last);
-      writer.write(s);
-    });
-  };
-
-  const double start = omp_get_wtime();
-  ProgressLine progress(settings.t_end, talk);
-  snapshot();
-  long ppe_total = 0;
-  auto after_step = [&](const isph::StepStats& st) {
-    ppe_total += st.ppe_iterations;
-    const long step = solver.steps();
-    if (step % settings.diagnostics_every == 0) {
-      const double ke = run.kinetic_energy();
-      write_on_rank_zero(rank, [&] {
-        diagnostics->row({solver.time(), double(step), omp_get_wtime() - start,
-                          double(st.ppe_iterations), st.max_speed, st.dt, st.ppe_residual,
-                          double(st.surface_particles), ke, st.fluid_volume,
-                          st.max_eddy_viscosity});
-      });
-    }
-    progress.update(solver.time(), step);
-  };
-  std::string why, cause;
-  const bool finished = run_to_end(run, settings, 1e-12, after_step, snapshot, progress, rank == 0,
-                                   args.out, why, cause);
-  report.cost(solver.time(), solver.steps(), particles, omp_get_wtime() - start, ppe_total);
-  report.parallel(solver.row_parts(), solver.rows_shared(), decomposed);
-  if (!finished) {
-    report.stopped(why, cause);
-    return 1;
-  }
-
-  if (talk) {
-    const double wall = omp_get_wtime() - start;
-    const auto& t = solver.timings();
-    const long steps = solver.steps();
-    std::printf(
-        "done: t = %g s in %ld steps, %s wall, %.3g particle-steps/s, %.1f PPE iterations/step\n",
-        solver.time(), steps, format_duration(wall).c_str(), double(particles) * steps / wall,
-        steps ? double(ppe_total) / steps : 0.0);
-    std::printf(
-        "  time per part: neighbours %.0f%%, operators %.0f%%, assembly %.0f%%, solve %.0f%%, "
-        "rest %.0f%%\n",
-        100 * t.neighbors / t.total(), 100 * t.operators / t.total(), 100 * t.assembly / t.total(),
-        100 * t.solve / t.total(), 100 * t.rest / t.total());
-    print_ppe_cost(solver);
-  }
-  return 0;
+// The arrays of `a` whose names start with `prefix`, without it.
+StageState with_prefix(const CheckpointArrays& a, const std::string& prefix) {
+  StageState s;
+  for (const auto& [name, v] : a.reals)
+    if (name.compare(0, prefix.size(), prefix) == 0) s[name.substr(prefix.size())] = v;
+  return s;
 }
 
 DemCaseConfig dem_config(const CaseFile& c) {
@@ -227,7 +115,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   const bool choose = coupling_model(given) == "auto";
   const AutoThresholds thresholds = choose ? auto_thresholds(given) : AutoThresholds{};
   std::vector<std::unique_ptr<CouplingStage<Dim>>> stages;
-  if (!choose) stages = make_coupling_stages<Dim>(given, scene, dt, rank == 0);
+  if (!choose) stages = make_coupling_stages<Dim>(given, scene, dt, rank == 0 && !args.resume);
   Vec3 up{0.0, 0.0, 0.0};
   {
     isph::Vec<Dim> g = scene.config.gravity;
@@ -260,6 +148,17 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   report.check_columns(columns);
   if (rank == 0) fs::create_directories(args.out);
   LiggghtsBackend backend(dem.liggghts_args(args.out));
+  // Resumed: the fluid and the run's loop from this rank's file, the grains from LIGGGHTS's
+  // restart in the checkpoint, read where the script reads its own.
+  Checkpoints checkpoints(args.out, settings.checkpoint_interval, MPI_COMM_WORLD);
+  checkpoints.set_identity(run_identity(case_fingerprint(given.path()), args.overrides));
+  RunPosition position;
+  CheckpointArrays saved;
+  if (args.resume) {
+    position = checkpoints.resume(saved);
+    backend.resume_from((checkpoints.resumed_directory() / kDemRestart).string(),
+                        saved.real("solver_time"));
+  }
   backend.initialize({dem.script, {}});
   // Run on without grains, the fluid alone would pass for a coupled result. Seen on 2 ranks:
   // LIGGGHTS inserts into each processor's part of an insertion region, and a region that a
@@ -273,12 +172,20 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   std::vector<std::string> auto_lines;
   const CaseFile c = [&] {
     if (!choose) return given;
+    if (args.resume) {  // the first run's choice, made from the grains it started with
+      const auto code = saved.integer("coupled_model");
+      if (code < 0 || code >= std::int64_t(std::size(kModels)))
+        throw CaseError("--resume: the checkpoint's coupling model is unknown");
+      const std::string model = kModels[code];
+      auto_lines.push_back("coupling.model = \"auto\" -> \"" + model + "\" (as chosen at t = 0)");
+      return given.with_override("coupling.model=\"" + model + "\"");
+    }
     const AutoChoice a = choose_model(backend.state(), dx, thresholds);
     auto_lines.push_back("coupling.model = \"auto\" -> \"" + a.model + "\"");
     for (const auto& g : a.classes) auto_lines.push_back("  " + describe(g, dx));
     return given.with_override("coupling.model=\"" + a.model + "\"");
   }();
-  if (choose) stages = make_coupling_stages<Dim>(c, scene, dt, rank == 0);
+  if (choose) stages = make_coupling_stages<Dim>(c, scene, dt, rank == 0 && !args.resume);
   const GrainModels models = grain_models(coupling_model(c));
   CoupledRun<Dim> run(std::move(scene), settings, backend, dem.substeps, std::move(stages));
   auto& solver = run.solver();
@@ -298,7 +205,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     std::fflush(stdout);
   }
   check_replicas(P, solver.steps());  // the ranks start from the same fluid
-  const long particles = long(P.size());
+  long particles = long(P.size());
   const bool decomposed = run.decompose();
   say_ranks(ranks_notice(ranks, decomposed, solver.config().pressure_solver.preconditioner), rank,
             talk);
@@ -307,15 +214,31 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   double grain_density = std::nan("");
   for (const auto& b : backend.state().bodies)
     if (b.volume > 0) grain_density = b.mass / b.volume;
-  const ErosionDiagnostics<Dim> erosion(
+  ErosionDiagnostics<Dim> erosion(
       backend.state(), up, c.has("inflow.velocity") ? std::abs(c.number("inflow.velocity")) : 1.0,
       grain_density);
-  SnapshotWriter writer(args.out, true, MPI_COMM_WORLD);
+  if (args.resume) {
+    restore_fluid(solver, saved);
+    run.restore(with_prefix(saved, "coupled_"));
+    erosion.restore(saved.real_array("erosion_layer"));
+    // The first run's count (its bodies' PMS particles were made at their first poses).
+    const isph::RowShare* d = solver.decomposition();
+    particles = long(d ? d->sum(double(P.size())) : double(P.size()));
+    if (talk)
+      std::printf("isphdem run: resuming from %s (t = %g s, step %ld)\n",
+                  checkpoints.resumed_directory().string().c_str(), solver.time(), solver.steps());
+  }
+  SnapshotWriter writer(args.out, !args.resume, MPI_COMM_WORLD);
+  if (args.resume)
+    writer.resume_after(checkpoints.resumed_step());
+  else
+    checkpoints.start_fresh();
   std::unique_ptr<DiagnosticsWriter> diagnostics;
   if (rank == 0) {
     std::ofstream f(args.out / "case_used.toml");
     f << "# " << c.path().string() << " with the overrides of this run\n" << c.table() << "\n";
-    diagnostics = std::make_unique<DiagnosticsWriter>(args.out / "diagnostics.csv", columns);
+    diagnostics = std::make_unique<DiagnosticsWriter>(args.out / "diagnostics.csv", columns,
+                                                      args.resume, checkpoints.resumed_step());
   }
   auto snapshot = [&]() {
     const DemState& state = backend.state();  // collective
@@ -329,10 +252,10 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     if (rank == 0) add_dem_groups(state, hydro_loads(run.loads()), s, &models);
     write_collectively(rank, [&] { writer.write(s); });
   };
-  const double start = omp_get_wtime();
+  const double start = omp_get_wtime() - position.wall_seconds;
   ProgressLine progress(settings.t_end, talk);
-  snapshot();
-  long ppe_total = 0;
+  if (!args.resume) snapshot();
+  long ppe_total = position.ppe_total;
   auto after_step = [&](const isph::StepStats& st) {
     ppe_total += st.ppe_iterations;
     const long step = solver.steps();
@@ -395,8 +318,42 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     if (rank == 0) progress.update(solver.time(), step);
   };
   std::string why, cause;
-  const bool finished = run_to_end(run, settings, 1e-9, after_step, snapshot, progress, rank == 0,
-                                   args.out, why, cause);
+  const int model = int(std::find(std::begin(kModels), std::end(kModels), coupling_model(c)) -
+                        std::begin(kModels));
+  auto save = [&](long at) {
+    return checkpoints.write(
+        solver.steps(), solver.time(), RunPosition{at, 0, ppe_total, omp_get_wtime() - start},
+        [&](CheckpointArrays& a, const fs::path& staged) {
+          save_fluid(solver, a);
+          StageState state;
+          run.save(state);
+          for (auto& [name, v] : state) a.reals["coupled_" + name] = std::move(v);
+          a.reals["erosion_layer"] = erosion.state();
+          a.set_integer("coupled_model", model);
+          backend.write_restart((staged / kDemRestart).string());  // collective
+        });
+  };
+  long k = args.resume ? position.output_index : 1;
+  bool finished = false;
+  try {
+    InterruptHandlers handlers;
+    finished =
+        run_to_end(run, settings, 1e-9, after_step, snapshot, progress, rank == 0, args.out, why,
+                   cause, k, [&](long at) {
+                     checkpoint_between_steps(solver.time(), solver.steps(), checkpoints, at, save);
+                   });
+    if (finished && settings.checkpoint_interval > 0 &&
+        checkpoints.last_written() != solver.steps())
+      save(k);
+  } catch (const Interrupted& e) {
+    progress.finish();
+    backend.finalize();
+    report.cost(solver.time(), solver.steps(), particles, omp_get_wtime() - start, ppe_total);
+    report.parallel(solver.row_parts(), solver.rows_shared(), decomposed);
+    report.interrupted(announce_interruption(e, args.file.string(), args.out.string(),
+                                             args.overrides, ranks_of(MPI_COMM_WORLD), rank == 0));
+    return e.exit_status();
+  }
   backend.finalize();
   report.cost(solver.time(), solver.steps(), particles, omp_get_wtime() - start, ppe_total);
   report.parallel(solver.row_parts(), solver.rows_shared(), decomposed);
@@ -440,7 +397,12 @@ int run_main(int argc, char** argv) {
     return 2;
   };
   try {
-    args = parse_verb_arguments(argc, argv, "case file", kUsage);
+    static_cast<VerbArguments&>(args) = parse_verb_arguments(
+        argc, argv, "case file", kUsage, [&](const std::string& arg, const auto&) {
+          if (arg != "--resume") return false;
+          args.resume = true;
+          return true;
+        });
     // A result.json never outlives the run it describes, also when this one stops at its input.
     if (rank == 0) remove_run_result(args.out);
     const CaseFile c = CaseFile::load(args.file, args.overrides, case_keys());
@@ -454,10 +416,13 @@ int run_main(int argc, char** argv) {
     if (has_dem && has_fluid)
       rc = case_dimension(c) == 2 ? run_coupled<2>(c, args, *report)
                                   : run_coupled<3>(c, args, *report);
+    else if (has_dem && args.resume)
+      throw CaseError("--resume: DEM-only cases write no checkpoints (run them anew)");
     else if (has_dem)
       rc = run_dem_only(c, args.out, args.quiet, *report);
     else
-      rc = case_dimension(c) == 2 ? run_case<2>(c, args, *report) : run_case<3>(c, args, *report);
+      rc = case_dimension(c) == 2 ? run_fluid_case<2>(c, args, *report)
+                                  : run_fluid_case<3>(c, args, *report);
     if (rank == 0) report->finish(!args.quiet);
     return rc;
   } catch (const CaseError& e) {

@@ -16,16 +16,23 @@ namespace isphdem {
 // point, so snapshots fall on t = k * interval. A SimulationError stops the run: the progress
 // line is closed, `report` says where it stopped (the snapshots already written are complete),
 // `why` gets the error, `cause` its one-word cause, and false comes back. `end_tolerance` is the
-// relative slack on t_end.
-template <class Run, class StepCallback, class WriteSnapshot>
+// relative slack on t_end. `k` is the output time stepped towards (k * interval): 1 for a new
+// run, where a checkpoint left it for a resumed one; at return, the next one. `between_steps(k)`
+// runs after `after_step` of every step (checkpoints, signals; whatever it throws, other than a
+// SimulationError, passes through).
+template <class Run, class StepCallback, class WriteSnapshot, class BetweenSteps>
 bool run_to_end(Run& run, const RunSettings& settings, double end_tolerance,
                 const StepCallback& after_step, const WriteSnapshot& snapshot,
                 ProgressLine& progress, bool report, const std::filesystem::path& out,
-                std::string& why, std::string& cause) {
+                std::string& why, std::string& cause, long& k, const BetweenSteps& between_steps) {
   const auto& solver = run.solver();
+  auto each_step = [&](const isph::StepStats& st) {
+    after_step(st);
+    between_steps(k);
+  };
   try {
-    for (long k = 1; solver.time() < settings.t_end * (1.0 - end_tolerance); ++k) {
-      run.run_until(std::min(k * settings.output_interval, settings.t_end), after_step);
+    for (; solver.time() < settings.t_end * (1.0 - end_tolerance); ++k) {
+      run.run_until(std::min(k * settings.output_interval, settings.t_end), each_step);
       snapshot();
     }
   } catch (const isph::SimulationError& e) {

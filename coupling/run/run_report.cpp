@@ -47,11 +47,17 @@ void RunReport::error(const std::string& why) {
   result_.message = why;
 }
 
+void RunReport::interrupted(const std::string& message) {
+  result_.status = "interrupted";
+  result_.message = message;
+}
+
 void RunReport::finish(bool talk) {
   std::error_code ec;
   if (!fs::is_directory(out_, ec)) return;
   const fs::path csv = out_ / "diagnostics.csv";
-  if (result_.status != "error" && !metrics_.empty() && fs::exists(csv, ec)) {
+  const bool ended = result_.status == "finished" || result_.status == "stopped";
+  if (ended && !metrics_.empty() && fs::exists(csv, ec)) {
     // One metric that cannot be evaluated (a window after the run's end) leaves the rest.
     try {
       const DiagnosticsTable table = read_diagnostics(csv);

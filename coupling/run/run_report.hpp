@@ -24,6 +24,9 @@ class RunReport {
   void parallel(int ranks, bool rows_shared, bool decomposed);
   void stopped(const std::string& why, const std::string& cause);
   void error(const std::string& why);
+  // SIGINT/SIGTERM ended the run between two steps, after a checkpoint: status "interrupted",
+  // the message says how to resume.
+  void interrupted(const std::string& message);
 
   // Evaluates the metrics (finished or stopped runs), prints them when `talk`, and writes
   // result.json when the output directory exists. A metric that cannot be evaluated is reported

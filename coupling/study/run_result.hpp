@@ -13,7 +13,8 @@ namespace isphdem {
 
 struct RunResult {
   // "finished": reached time.end; "stopped": a simulation error (CFL, NaN, solver failure, a
-  // grain leaving the domain) ended it early, output so far valid; "error": bad input.
+  // grain leaving the domain) ended it early, output so far valid; "error": bad input;
+  // "interrupted": SIGINT/SIGTERM, a checkpoint written (`isphdem run ... --resume` goes on).
   std::string status;
   std::string message;                 // the error, for "stopped" and "error"
   std::string cause;                   // "stopped": isph::SimulationError::cause(), e.g. "cfl"

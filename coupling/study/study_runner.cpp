@@ -19,6 +19,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "io/checkpoint.hpp"
 #include "io/progress_line.hpp"
 #include "study/diagnostics_table.hpp"
 
@@ -44,13 +45,14 @@ std::string last_line(const fs::path& log) {
 // Starts `isphdem run` for one point with its output going to DIR/log.txt. The child dies with
 // the study (PR_SET_PDEATHSIG), so a killed study leaves no orphan writing into its directories.
 pid_t start_point(const Study& study, const StudyPoint& p, const fs::path& dir,
-                  const StudyRunOptions& o, const std::string& threads) {
+                  const StudyRunOptions& o, const std::string& threads, bool resume) {
   std::vector<std::string> args{o.isphdem.string(), "run", study.base.string(), "--out",
                                 dir.string()};
   for (const auto& s : p.overrides) {
     args.push_back("--set");
     args.push_back(s);
   }
+  if (resume) args.push_back("--resume");
   const std::string log = (dir / "log.txt").string();
   std::vector<char*> argv;  // built before fork: the child only calls async-signal-safe functions
   for (auto& a : args) argv.push_back(a.data());
@@ -193,10 +195,18 @@ std::vector<PointOutcome> run_study(const Study& study, const StudyRunOptions& o
       const std::size_t k = pending[next++];
       const fs::path dir = o.out / study.points[k].name;
       fs::create_directories(dir);
+      // A point stopped (interrupted, killed) after a checkpoint of this very point goes on from
+      // it; an earlier point's checkpoint (another case text or --set) is not taken.
+      const auto identity = checkpoint_identity(dir);
+      const bool resume =
+          identity && *identity == run_identity(fingerprint, study.points[k].overrides);
       remove_run_result(dir);
-      // The ETA reads these while the point runs: an earlier run's must not stand for it.
-      for (const char* stale : {"diagnostics.csv", "case_used.toml"}) fs::remove(dir / stale);
-      running[start_point(study, study.points[k], dir, o, threads)] = {k, now_seconds()};
+      // The ETA reads these while the point runs: an earlier run's must not stand for it (a
+      // resumed point's diagnostics.csv is its own, continued).
+      fs::remove(dir / "case_used.toml");
+      if (!resume) fs::remove(dir / "diagnostics.csv");
+      if (resume) say(k, "resumes from its checkpoint");
+      running[start_point(study, study.points[k], dir, o, threads, resume)] = {k, now_seconds()};
     }
     int status = 0;
     const pid_t pid = waitpid(-1, &status, 0);

@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "coupling_stage.hpp"
 
@@ -85,6 +86,21 @@ class MeanFlowDrive final : public CouplingStage<Dim> {
   }
 
   const isph::Vec<Dim>& drive() const { return drive_; }
+  // The controller's drive and integral (the body force it set is the solver's, saved there).
+  void save(StageState& state) const override {
+    state["drive"].assign(drive_.data(), drive_.data() + Dim);
+    state["integral"].assign(integral_.data(), integral_.data() + Dim);
+  }
+  void restore(const StageState& state) override {
+    const auto d = state.find("drive"), i = state.find("integral");
+    if (d == state.end() || i == state.end() || d->second.size() != std::size_t(Dim) ||
+        i->second.size() != std::size_t(Dim))
+      throw std::runtime_error("mean-flow drive: the checkpoint holds no drive of this dimension");
+    for (int a = 0; a < Dim; ++a) {
+      drive_[a] = d->second[a];
+      integral_[a] = i->second[a];
+    }
+  }
 
  private:
   // DemState rows are sorted by atom tag and by body id.

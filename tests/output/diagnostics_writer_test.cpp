@@ -104,6 +104,19 @@ TEST(DiagnosticsWriter, AppendContinuesAndDropsAPartialLastLine) {
   EXPECT_EQ(lines(path), (std::vector<std::string>{"time,step", "0.5,1", "1,2", "1.5,3"}));
 }
 
+TEST(DiagnosticsWriter, AppendThroughAStepDropsTheRowsAfterIt) {
+  // A run resumed from its checkpoint at step 20: the rows of steps 30 and 40 written before it
+  // was killed are written again by the continuation, so they go.
+  const auto path = scratch_dir() / "diagnostics.csv";
+  std::ofstream(path) << "time,step,x\n0.1,10,1\n0.2,20,2\n0.3,30,3\n0.4,40,4\n0.5,";
+  {
+    DiagnosticsWriter d(path, {"time", "step", "x"}, /*append=*/true, /*through_step=*/20);
+    d.row({0.3, 30, 3.5});
+  }
+  EXPECT_EQ(lines(path),
+            (std::vector<std::string>{"time,step,x", "0.1,10,1", "0.2,20,2", "0.3,30,3.5"}));
+}
+
 TEST(DiagnosticsWriter, AppendToAMissingFileStartsIt) {
   const auto path = scratch_dir() / "diagnostics.csv";
   DiagnosticsWriter d(path, {"time", "step"}, /*append=*/true);
