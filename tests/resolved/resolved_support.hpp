@@ -64,6 +64,19 @@ inline DemState clump(const std::vector<Vec3>& centres, double r, double rho_s) 
   return s;
 }
 
+// The resolved stage's settings for a held body of radius a in a periodic array: PMS particles
+// on the fluid lattice, the body's volume the particles' own (no DEM volume), and in 2D a slab
+// T = 4a/3, in which a sphere's section is the disc of radius a.
+inline ResolvedSettings held_body_settings(double dx, double rho, double a) {
+  ResolvedSettings set;
+  set.spacing = dx;
+  set.fluid_density = rho;
+  set.slab_thickness = 4.0 * a / 3.0;
+  set.shape = PmsShape::Lattice;
+  set.dem_volume = false;
+  return set;
+}
+
 // Quasi-2D rigid-body step (what fix multisphere + fix couple/isph planar z do): semi-implicit
 // Euler with gravity g and the hydrodynamic loads; members follow the body.
 inline void integrate_planar(DemState& s, const DemLoads& loads, double gy, double dt) {

@@ -44,12 +44,7 @@ ArrayResult cylinder_array(double L, double dx, double a, double nu, double g, d
   isph::IsphSolver<Dim> solver(scene.config, scene.domain, scene.particles);
   const double c0 = dx * std::floor(0.5 * L / dx) + 0.5 * dx;
   DemState dem = clump({Vec3{c0, c0, 0.0}}, a, 1e9);
-  ResolvedSettings set;
-  set.spacing = dx;
-  set.fluid_density = rho;
-  set.slab_thickness = 4.0 * a / 3.0;
-  set.shape = PmsShape::Lattice;
-  set.dem_volume = false;
+  const ResolvedSettings set = held_body_settings(dx, rho, a);
   ResolvedCoupling<Dim> stage(set);
   stage.initialize(dem, solver);
   const int steps = static_cast<int>(std::lround(t_end / dt));

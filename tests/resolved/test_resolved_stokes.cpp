@@ -50,12 +50,7 @@ StokesResult periodic_array(double L, double dx, double a, double g) {
   // radius a), centred on a lattice node in the middle of the box.
   const double c0 = dx * std::floor(0.5 * L / dx) + 0.5 * dx;
   DemState dem = clump({Vec3{c0, c0, Dim == 3 ? c0 : 0.0}}, a, 1e9);
-  ResolvedSettings set;
-  set.spacing = dx;
-  set.fluid_density = rho;
-  set.slab_thickness = 4.0 * a / 3.0;
-  set.shape = PmsShape::Lattice;
-  set.dem_volume = false;
+  const ResolvedSettings set = held_body_settings(dx, rho, a);
   ResolvedCoupling<Dim> stage(set);
   stage.initialize(dem, solver);
   const double dt = 0.125 * dx * dx / nu;
