@@ -4,8 +4,10 @@
 //
 // In a step they are computed as fluid: the predictor gives them the viscous and gravity terms,
 // they are unknowns of the pressure equation like fluid rows, and the corrector's velocity
-// change is their hydrodynamic acceleration. The body takes that momentum (minus gravity, which
-// the DEM applies itself): the particle's force is
+// change is their hydrodynamic acceleration. (In the projection itself their u* is, by default,
+// v + dt c grad p^n / rho, so that a body stays rigid through a steady projection:
+// IsphConfig::pms_pressure_increment; their force keeps the predictor's u*.) The body takes that
+// momentum (minus gravity, which the DEM applies itself): the particle's force is
 //     f_i = rho0 V_i (nu lap u_i - grad p_i / rho0)
 // and their velocity is left at the prescribed rigid one (they do not shift or advect; the
 // coupling places them at the body's next pose). Why fluid rows rather than Adami-type moving
