@@ -9,8 +9,10 @@
 // have the same bits: LIGGGHTS sets a run up after read_restart (neighbour lists built anew, in
 // another order than the run's own), and the grains' contacts amplify that round-off. Measured at
 // 0.05 s, resumed at 0.02 s: fluid positions 1.5e-8 m, grain positions 1.4e-8 m, body centres
-// 6e-10 m apart (after a SIGTERM about as much). Compared within 1e-6 m (a thousandth of dx, a
-// 500th of the fines' radius).
+// 6e-10 m apart (after a SIGTERM about as much). With the pressure-increment PMS rows and the
+// density relaxation time of issue 46 the layer is livelier (faster jets and fines) and the same
+// round-off grows to 1.4e-6 m by 0.05 s. Compared within 1e-5 m (a hundredth of dx, a 50th of the
+// fines' radius).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -56,7 +58,7 @@ std::vector<std::string> times_in(const fs::path& xdmf) {
   return spans_between(read_file(xdmf), "<Time Value=\"", "\"", "0123456789.e-+");
 }
 
-// Positions of every group within 1e-6 m of the run never stopped at the end; every diagnostics
+// Positions of every group within 1e-5 m of the run never stopped at the end; every diagnostics
 // step and every output time once, the same as that run's.
 void expect_close_to(const fs::path& out, const fs::path& ref) {
   const auto ours = files_named(out, "snap_"), theirs = files_named(ref, "snap_");
@@ -67,7 +69,7 @@ void expect_close_to(const fs::path& out, const fs::path& ref) {
     ASSERT_EQ(a.id, b.id) << group;
     const double moved = max_difference(a.x, b.x);
     std::printf("%s: positions differ by up to %.3g m\n", group, moved);
-    EXPECT_LT(moved, 1e-6) << group;
+    EXPECT_LT(moved, 1e-5) << group;
   }
   const auto rows = read_csv(out / "diagnostics.csv"), want = read_csv(ref / "diagnostics.csv");
   ASSERT_EQ(rows.size(), want.size());
@@ -101,7 +103,7 @@ TEST_F(ResumeCoupled, WritingCheckpointsLeavesTheRunUnchanged) {
   EXPECT_TRUE(rows_without_timings(out) == rows_without_timings(dir_ / "ref"));
 }
 
-TEST_F(ResumeCoupled, FromACheckpointItEndsWithinAMicrometre) {
+TEST_F(ResumeCoupled, FromACheckpointItEndsWithinTenMicrometres) {
   const fs::path out = dir_ / "out";
   const Result first = run(kCase + " --set time.end=0.02 --out " + out.string());
   ASSERT_EQ(first.exit_code, 0) << first.output;
@@ -113,7 +115,7 @@ TEST_F(ResumeCoupled, FromACheckpointItEndsWithinAMicrometre) {
   expect_close_to(out, dir_ / "ref");
 }
 
-TEST_F(ResumeCoupled, AfterSigtermItEndsWithinAMicrometre) {
+TEST_F(ResumeCoupled, AfterSigtermItEndsWithinTenMicrometres) {
   const fs::path out = dir_ / "out";
   const Result stopped =
       run_and_signal(out, kCase + " --set time.end=0.05", "TERM", has_checkpoint(out));

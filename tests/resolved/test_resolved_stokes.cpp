@@ -119,11 +119,15 @@ StokesResult periodic_array(double L, double dx, double a, double g) {
   return r;
 }
 
+// d/dx = 5: +5.5% with the pressure-increment PMS rows (issue 46). Projected as fluid, the body
+// leaked by dt g a step at this step (the viscous limit), which passed more flow and offset part
+// of the resolution's excess drag (the 2D array's share of it: tests/resolved/
+// test_pms_time_step.cpp).
 TEST(ResolvedStokes, HeldSphereInCubicArrayMatchesHasimoto) {
   const StokesResult r = periodic_array<3>(0.04, 0.002, 0.005, 2e-3);
   EXPECT_LT(r.reynolds, 0.05);
   EXPECT_NEAR(r.balance, 1.0, 1e-3);
-  EXPECT_NEAR(r.ratio, r.exact, 0.05 * r.exact);
+  EXPECT_NEAR(r.ratio, r.exact, 0.07 * r.exact);
 }
 
 TEST(ResolvedStokes, HeldCylinderInSquareArrayMatchesSanganiAcrivos) {
