@@ -151,15 +151,8 @@ int run_fluid_case(const CaseFile& c, const RunArguments& args, RunReport& repor
   bool finished = false;
   try {
     InterruptHandlers handlers;
-    finished =
-        run_to_end(run, settings, 1e-12, after_step, snapshot, progress, rank == 0, args.out, why,
-                   cause, k, [&](long at) {
-                     checkpoint_between_steps(solver.time(), solver.steps(), checkpoints, at, save);
-                   });
-    // The end too, so that a later time.end can go on from it.
-    if (finished && settings.checkpoint_interval > 0 &&
-        checkpoints.last_written() != solver.steps())
-      save(k);
+    finished = run_to_end(run, settings, 1e-12, after_step, snapshot, progress, rank == 0, args.out,
+                          why, cause, k, checkpoints, save);
   } catch (const Interrupted& e) {
     progress.finish();
     report.cost(solver.time(), solver.steps(), particles, omp_get_wtime() - start, ppe_total);

@@ -337,14 +337,8 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   bool finished = false;
   try {
     InterruptHandlers handlers;
-    finished =
-        run_to_end(run, settings, 1e-9, after_step, snapshot, progress, rank == 0, args.out, why,
-                   cause, k, [&](long at) {
-                     checkpoint_between_steps(solver.time(), solver.steps(), checkpoints, at, save);
-                   });
-    if (finished && settings.checkpoint_interval > 0 &&
-        checkpoints.last_written() != solver.steps())
-      save(k);
+    finished = run_to_end(run, settings, 1e-9, after_step, snapshot, progress, rank == 0, args.out,
+                          why, cause, k, checkpoints, save);
   } catch (const Interrupted& e) {
     progress.finish();
     backend.finalize();

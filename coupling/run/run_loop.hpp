@@ -4,11 +4,13 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "case/run_settings.hpp"
 #include "io/progress_line.hpp"
 #include "isph_solver.hpp"
+#include "run/checkpoints.hpp"
 
 namespace isphdem {
 
@@ -17,18 +19,20 @@ namespace isphdem {
 // line is closed, `report` says where it stopped (the snapshots already written are complete),
 // `why` gets the error, `cause` its one-word cause, and false comes back. `end_tolerance` is the
 // relative slack on t_end. `k` is the output time stepped towards (k * interval): 1 for a new
-// run, where a checkpoint left it for a resumed one; at return, the next one. `between_steps(k)`
-// runs after `after_step` of every step (checkpoints, signals; whatever it throws, other than a
-// SimulationError, passes through).
-template <class Run, class StepCallback, class WriteSnapshot, class BetweenSteps>
+// run, where a checkpoint left it for a resumed one; at return, the next one. After `after_step`
+// of every step, checkpoint_between_steps writes a checkpoint through `save(k)` when one is due
+// and throws Interrupted on a signal (passed through); a finished run also checkpoints its end,
+// so that a later time.end can go on from it.
+template <class Run, class StepCallback, class WriteSnapshot>
 bool run_to_end(Run& run, const RunSettings& settings, double end_tolerance,
                 const StepCallback& after_step, const WriteSnapshot& snapshot,
                 ProgressLine& progress, bool report, const std::filesystem::path& out,
-                std::string& why, std::string& cause, long& k, const BetweenSteps& between_steps) {
+                std::string& why, std::string& cause, long& k, const Checkpoints& checkpoints,
+                const std::function<std::filesystem::path(long)>& save) {
   const auto& solver = run.solver();
   auto each_step = [&](const isph::StepStats& st) {
     after_step(st);
-    between_steps(k);
+    checkpoint_between_steps(solver.time(), solver.steps(), checkpoints, k, save);
   };
   try {
     for (; solver.time() < settings.t_end * (1.0 - end_tolerance); ++k) {
@@ -47,6 +51,7 @@ bool run_to_end(Run& run, const RunSettings& settings, double end_tolerance,
     return false;
   }
   progress.finish();
+  if (settings.checkpoint_interval > 0 && checkpoints.last_written() != solver.steps()) save(k);
   return true;
 }
 
