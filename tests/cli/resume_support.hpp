@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "../output/h5_read.hpp"
 #include "cli_support.hpp"
+#include "mpi_support.hpp"
 
 namespace isphdem::cli {
 
@@ -71,6 +73,19 @@ inline Result run_and_signal(const fs::path& out, const std::string& args,
   const auto at = r.output.find("exit=");
   r.exit_code = at == std::string::npos ? -1 : std::stoi(r.output.substr(at + 5));
   return r;
+}
+
+// The fluid, grain and body positions of two coupled snapshots, the same ids in each group and
+// no position further than `tolerance` m apart (the largest distance printed per group).
+inline void expect_positions_within(const fs::path& ours, const fs::path& theirs,
+                                    double tolerance) {
+  for (const char* group : {"fluid", "dem", "bodies"}) {
+    const Fields a = read_fields(ours, group), b = read_fields(theirs, group);
+    ASSERT_EQ(a.id, b.id) << group;
+    const double moved = max_difference(a.x, b.x);
+    std::printf("%s: positions differ by up to %.3g m\n", group, moved);
+    EXPECT_LT(moved, tolerance) << group;
+  }
 }
 
 // A checkpoint is in OUT.
