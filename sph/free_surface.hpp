@@ -25,6 +25,7 @@ struct SurfaceCriteria {
   double density_ratio = 0.9;  // n_i / n0 below this: surface
   double divergence = 0.0;     // div r below this: surface (0: 1.5 in 2D, 2.4 in 3D)
   bool scan = false;           // also mark_open_side_as_surface (below)
+  bool unstable_rows = true;   // also mark_unstable_projection_rows (projection_stability.hpp)
 };
 
 SurfaceDetection surface_detection_from_name(const std::string& name);

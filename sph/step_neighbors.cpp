@@ -1,6 +1,7 @@
 // Stage 1 of a step: sort, neighbour lists with the pair geometry (r_ij, W, grad W), and the
 // corrected operator weights that every later stage reuses.
 #include "isph_solver.hpp"
+#include "projection_stability.hpp"
 #include "stopwatch.hpp"
 
 namespace isph {
@@ -41,6 +42,19 @@ void IsphSolver<Dim>::compute_operator_weights() {
   for (int i = 0; i < n; ++i)
     operator_mode_[i] = particles_.kind[i] == kWall ? 0 : (particles_.surface[i] ? 1 : 2);
   compute_operators(nb_, kernel_.h(), particles_.volume, operator_mode_, op_);
+  // Rows next to the surface that would amplify their own divergence are surface rows (see
+  // projection_stability.hpp); under a surface remesh the remeshed rows are the surface.
+  if (config_.free_surface && config_.surface.unstable_rows && surface_columns_.empty()) {
+    double marked =
+        mark_unstable_projection_rows(particles_, nb_, op_, first_, last_, kMinProjectionRatio);
+    exchange(particles_.surface);
+    if (const RowShare* s = block_share()) marked = s->max(marked);  // all recompute, or none
+    if (marked > 0.0) {
+      for (int i = 0; i < n; ++i)
+        if (particles_.surface[i] && operator_mode_[i] == 2) operator_mode_[i] = 1;
+      compute_operators(nb_, kernel_.h(), particles_.volume, operator_mode_, op_);
+    }
+  }
   exchange(op_.order);  // the pin and the uniform source read every row's
 }
 

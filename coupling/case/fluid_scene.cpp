@@ -50,6 +50,7 @@ std::vector<std::string> fluid_scene_keys() {
           "solver.surface_detection",
           "solver.surface_divergence",
           "solver.surface_scan",
+          "solver.surface_unstable_rows",
           "solver.surface_refill",
           "solver.surface_remesh_rows",
           "solver.surface_remesh_every",
@@ -278,6 +279,7 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c, int part, int parts) {
   }
   cfg.surface.divergence = c.positive("solver.surface_divergence", Dim == 2 ? 1.5 : 2.4);
   cfg.surface.scan = c.boolean("solver.surface_scan", cfg.surface.scan);
+  cfg.surface.unstable_rows = c.boolean("solver.surface_unstable_rows", cfg.surface.unstable_rows);
   cfg.surface_refill = c.boolean("solver.surface_refill", cfg.surface_refill);
   cfg.surface_remesh_rows =
       static_cast<int>(c.integer("solver.surface_remesh_rows", cfg.surface_remesh_rows));
