@@ -22,21 +22,21 @@
 
 namespace isph {
 
-// Rows on a lattice read 0.1-0.2 (the wide D G stencil against the compact Laplacian); the rows
-// that blew the disturbed surface up read below 0.
-constexpr double kMinProjectionRatio = 0.05;
+// The stability limit itself: a row whose ratio is not above 0 does not damp its divergence.
+// Lattice rows read 0.10-0.18 in 2D and 0.06-0.09 in 3D (the wide D G stencil against the compact
+// Laplacian); the rows that blew a disturbed surface up read -0.3 to -0.1.
+constexpr double kMinProjectionRatio = 0.0;
 
-// (DG)_ii / L_ii for particle i. Neighbours j whose velocity the pressure does not correct (walls,
-// solid particles) and neighbours without rows of their own (j outside [first, last): halo rows
-// of a decomposed run) contribute no a_ji term - the halo's is taken as -a_ij, its value on a
-// symmetric support.
+// (DG)_ii / L_ii for particle i, with walls held and a_ji = -a_ij (see the .cpp). Neighbours
+// whose velocity the pressure does not correct (walls, solid particles, the forcing zone) give no
+// a_ji term.
 template <int Dim>
 double projection_self_ratio(const Particles<Dim>& P, const Neighbors<Dim>& nb,
-                             const Operators<Dim>& op, int i, int first, int last);
+                             const Operators<Dim>& op, int i);
 
 // Marks as free surface every fluid particle in [first, last) that is not surface yet, has a
 // surface neighbour (the unstable rows sit next to the surface), and whose ratio lies outside
-// (min_ratio, 2 - min_ratio). Returns how many it marked.
+// [min_ratio, 2 - min_ratio]. Returns how many it marked.
 template <int Dim>
 int mark_unstable_projection_rows(Particles<Dim>& P, const Neighbors<Dim>& nb,
                                   const Operators<Dim>& op, int first, int last, double min_ratio);

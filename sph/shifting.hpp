@@ -35,11 +35,9 @@ void compute_shifts(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
 // the pressure there rose to 1e4-1e5 Pa against a head of 1e2 Pa, and the run broke up. For each
 // pair that would end closer than min_distance, both displacements (dt v + shift) are moved
 // apart symmetrically and the approaching part of the relative velocity is removed; momentum is
-// conserved. Pairs never come that close in smooth interior flow, so it acts at splashes only.
-// With shared rows (sph/row_share.hpp; x, v and shift whole on every process) each process
-// lists the pairs of its rows that end within twice min_distance, and every process runs the
-// one serial sweep over all processes' lists: the same result everywhere, and the one-process
-// result unless a correction carried a pair from beyond twice min_distance to within it.
+// conserved. It acts near the surface and at splashes, where pairs close up.
+// Each particle takes its half of each of its close pairs, all computed from the state before the
+// sweep: the same on one process, on shared rows and decomposed.
 template <int Dim>
 void separate_close_pairs(Particles<Dim>& particles, const Neighbors<Dim>& nb,
                           const Domain<Dim>& domain, double dt, double min_distance,

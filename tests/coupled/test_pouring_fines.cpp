@@ -2,9 +2,10 @@
 // air into a quasi-2D tank (dx = 2 mm, unresolved). The run must reach 1 s with no fluid faster
 // than twice the grains' entry speed, and the dropped grains must settle at the speed of the same
 // grains released under water: entering through the surface changes nothing once they are in.
-// Before the near-surface rows that amplify their own divergence were marked as surface
-// (sph/projection_stability.hpp), this case at its step of 2.5e-4 s threw water out of the tank
-// at 0.73 s (fastest fluid 1.8 m/s, grains at 0.63 m/s).
+// Before 2026-12-06 this case threw water out of the tank within 0.2-0.8 s at its step of 1e-4 s
+// (0.75 s at 2.5e-4 s): near a disturbed free surface, pressure rows that amplified their own
+// divergence and particle pairs closing to 0.5 dx (docs/fluid.md, "A disturbed free surface at
+// small dt"; sph/projection_stability.hpp, kMinPairDistance in sph/step_correction.cpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>

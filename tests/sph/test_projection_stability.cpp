@@ -3,6 +3,7 @@
 // interior amplifies it (ratio < 0) and is marked as surface, its neighbours below are not.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "kernel.hpp"
@@ -61,7 +62,7 @@ TEST(ProjectionStability, LatticeRowsDampTheirDivergence) {
   double lo = 1e300, hi = -1e300;
   for (int i = 0; i < n_of(b); ++i) {
     if (b.p.kind[i] != kFluid || b.p.surface[i]) continue;
-    const double r = projection_self_ratio(b.p, b.nb, b.op, i, 0, n_of(b));
+    const double r = projection_self_ratio(b.p, b.nb, b.op, i);
     lo = std::min(lo, r);
     hi = std::max(hi, r);
   }
@@ -77,7 +78,7 @@ void check_missed(double squeeze) {
   for (int i = 0; i < n_of(b); ++i)
     if (b.p.kind[i] == kFluid && b.p.x[i][1] > 0.09 && !b.p.surface[i]) missed = i;
   ASSERT_GE(missed, 0);
-  const double r = projection_self_ratio(b.p, b.nb, b.op, missed, 0, n_of(b));
+  const double r = projection_self_ratio(b.p, b.nb, b.op, missed);
   std::printf(
       "top-row particle read as interior (neighbours %.2f dx away): ratio %.3f, its "
       "divergence x %.2f per step\n",
@@ -89,6 +90,55 @@ void check_missed(double squeeze) {
 
 TEST(ProjectionStability, MissedSurfaceParticleIsMarked) { check_missed(1.0); }
 TEST(ProjectionStability, MissedSurfaceParticleInASqueezedRowIsMarked) { check_missed(0.67); }
+
+}  // namespace
+}  // namespace isph
+
+namespace isph {
+namespace {
+
+// The same in 3D: a 10 x 10 x 8 block of water on a three-layer floor, periodic in x and y, the
+// top layer marked as surface.
+TEST(ProjectionStability, LatticeRowsDampTheirDivergenceIn3D) {
+  const double dx = 0.01;
+  Particles<3> p;
+  p.spacing = dx;
+  p.volume = dx * dx * dx;
+  for (int k = -3; k < 8; ++k)
+    for (int j = 0; j < 10; ++j)
+      for (int i = 0; i < 10; ++i)
+        p.add(Vec<3>((i + 0.5) * dx, (j + 0.5) * dx, (k + 0.5) * dx), Vec<3>::Zero(),
+              k < 0 ? kWall : kFluid);
+  Domain<3> dom;
+  dom.lo = Vec<3>(0.0, 0.0, -0.05);
+  dom.hi = Vec<3>(0.1, 0.1, 0.2);
+  dom.periodic[0] = dom.periodic[1] = true;
+  Kernel<3> W(KernelType::WendlandC2, 1.3 * dx);
+  NeighborSearch<3> search(dom, W.support());
+  search.sort(p);
+  Neighbors<3> nb;
+  search.build(p, W, nb);
+  p.surface.assign(p.size(), 0);
+  std::vector<uint8_t> mode(p.size(), 2);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p.surface[i] = p.x[i][2] > 0.07;
+    mode[i] = p.kind[i] == kWall ? 0 : (p.surface[i] ? 1 : 2);
+  }
+  Operators<3> op;
+  compute_operators(nb, W.h(), p.volume, mode, op);
+  const int n = static_cast<int>(p.size());
+  double lo = 1e300, hi = -1e300;
+  for (int i = 0; i < n; ++i) {
+    if (p.kind[i] != kFluid || p.surface[i]) continue;
+    const double r = projection_self_ratio(p, nb, op, i);
+    lo = std::min(lo, r);
+    hi = std::max(hi, r);
+  }
+  std::printf("3D lattice rows under a marked top layer: ratio %.3f .. %.3f\n", lo, hi);
+  EXPECT_GT(lo, kMinProjectionRatio);
+  EXPECT_LT(hi, 2.0 - kMinProjectionRatio);
+  EXPECT_EQ(mark_unstable_projection_rows(p, nb, op, 0, n, kMinProjectionRatio), 0);
+}
 
 }  // namespace
 }  // namespace isph
