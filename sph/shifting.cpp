@@ -83,6 +83,11 @@ void separate_close_pairs(Particles<Dim>& particles, const Neighbors<Dim>& nb,
     shift[i] += ds[i - lo];
     P.v[i] += dv[i - lo];
   }
+  // Shared rows: every process holds shift and v whole again (decomposed: the halo is dropped).
+  if (parts && !share->decomposed()) {
+    share->exchange(shift);
+    share->exchange(P.v);
+  }
 }
 
 template void separate_close_pairs<2>(Particles<2>&, const Neighbors<2>&, const Domain<2>&, double,

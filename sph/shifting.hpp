@@ -37,7 +37,8 @@ void compute_shifts(const Particles<Dim>& particles, const Neighbors<Dim>& nb,
 // apart symmetrically and the approaching part of the relative velocity is removed; momentum is
 // conserved. It acts near the surface and at splashes, where pairs close up.
 // Each particle takes its half of each of its close pairs, all computed from the state before the
-// sweep: the same on one process, on shared rows and decomposed.
+// sweep: the same on one process, on shared rows (shift and v whole on every process after the
+// call) and decomposed (owned rows corrected).
 template <int Dim>
 void separate_close_pairs(Particles<Dim>& particles, const Neighbors<Dim>& nb,
                           const Domain<Dim>& domain, double dt, double min_distance,
