@@ -6,13 +6,14 @@
 // after the step is the divergence before times 1 - (DG)_ii / L_ii, where
 //   L_ii  = -sum_j b_ij,
 //   (DG)_ii = -(dt/rho)^-1 d(D u_i)/d p_i = sum_j a_ij . a_ji + |sum_j a_ij|^2
-// (a_ij, b_ij the operator weights). On a full support sum_j a_ij = 0 and the ratio is near 1. On
-// a one-sided support that the surface tests read as interior (a top row squeezed along the
-// surface, a kink in a disturbed surface) |sum_j a_ij|^2 dominates, the ratio turns negative and
-// the particle's divergence - and its pressure - grows by |1 - ratio| every step: a disturbed
-// free surface at dx = 2 mm blew up within 30 steps of such a row forming, in a number of steps
-// that did not depend on dt (so smaller steps blew up sooner in time). Such a row is a surface
-// row in all but name and takes p = 0.
+// (a_ij, b_ij the operator weights). On a full support sum_j a_ij = 0 and the ratio is positive
+// (0.10-0.15 on a 2D lattice: the wide D G stencil against the compact Laplacian), so every step
+// damps the divergence. On a one-sided support that the surface tests read as interior (a top row
+// squeezed along the surface, a kink in a disturbed surface) |sum_j a_ij|^2 dominates, the ratio
+// turns negative and the particle's divergence - and its pressure - grows by |1 - ratio| every
+// step: -378, -679, -1212, -2090 Pa in four steps under a 30 Pa head in a disturbed tank at
+// dx = 2 mm (docs/fluid.md, "A disturbed free surface at small dt"). Such a row is a surface row
+// in all but name and takes p = 0.
 #include <cstdint>
 #include <vector>
 
@@ -23,8 +24,8 @@
 namespace isph {
 
 // The stability limit itself: a row whose ratio is not above 0 does not damp its divergence.
-// Lattice rows read 0.10-0.18 in 2D and 0.06-0.09 in 3D (the wide D G stencil against the compact
-// Laplacian); the rows that blew a disturbed surface up read -0.3 to -0.1.
+// Lattice rows read 0.10-0.15 in 2D and 0.06-0.08 in 3D; a top-row particle read as interior reads
+// -0.20 (-0.08 squeezed to 0.67 dx): tests/sph/test_projection_stability.cpp.
 constexpr double kMinProjectionRatio = 0.0;
 
 // (DG)_ii / L_ii for particle i, with walls held and a_ji = -a_ij (see the .cpp). Neighbours

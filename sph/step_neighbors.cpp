@@ -43,7 +43,8 @@ void IsphSolver<Dim>::compute_operator_weights() {
     operator_mode_[i] = particles_.kind[i] == kWall ? 0 : (particles_.surface[i] ? 1 : 2);
   compute_operators(nb_, kernel_.h(), particles_.volume, operator_mode_, op_);
   // Rows next to the surface that would amplify their own divergence are surface rows (see
-  // projection_stability.hpp); under a surface remesh the remeshed rows are the surface.
+  // projection_stability.hpp): a surface test that needs the operators, so it runs here and not in
+  // detect_free_surface. Under a surface remesh the remeshed rows are the surface.
   if (config_.free_surface && config_.surface.unstable_rows && surface_columns_.empty()) {
     double marked =
         mark_unstable_projection_rows(particles_, nb_, op_, first_, last_, kMinProjectionRatio);
