@@ -81,6 +81,18 @@ inline std::string reduced_case() {
          reduced_packing_dir().string() + "\"'";
 }
 
+// The seed's layer (examples/internal_erosion_2d/in.packing), written into the build tree by the
+// ctest fixture erosion_packing, and case.toml reading it.
+inline std::filesystem::path seed_packing_dir() {
+  return std::filesystem::path(ISPHDEM_BINARY_DIR) / "test_output" / "erosion_packing";
+}
+
+inline std::string seed_case() {
+  return std::string(ISPHDEM_SOURCE_DIR) +
+         "/examples/internal_erosion_2d/case.toml --set 'dem.variables.packing_dir=\"" +
+         seed_packing_dir().string() + "\"'";
+}
+
 inline void write_file(const std::filesystem::path& p, const std::string& text) {
   std::ofstream(p) << text;
 }

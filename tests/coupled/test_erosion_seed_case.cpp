@@ -1,0 +1,58 @@
+// The seed's internal-erosion case itself (examples/internal_erosion_2d/case.toml: free surface,
+// 384 grains, the seed's layer), semi-resolved at v_in = 0.5 cm/s, run through `isphdem` as the
+// README runs it, for 1 s at the seed's fluid step 1e-4 s and at 5e-4 s (the DEM step held at
+// 1e-6 s). With alpha_s = 0.001 per step the run at the seed's own step broke at 0.69 s (a fluid
+// particle in a pore at 17 m/s) and its pore jets read 32 v_in against 25 at 5e-4 s; with the
+// case's density relaxation time both reach 1 s and agree (issue 46; docs/internal_erosion.md,
+// "Time step").
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <string>
+
+#include "../cli/cli_support.hpp"
+
+namespace isphdem {
+namespace {
+
+TEST(ErosionSeedCase, SemiResolvedRunsAtTheSeedsStepAndPoreJetsAgreeAtFiveTimesIt) {
+  ASSERT_TRUE(std::filesystem::exists(cli::seed_packing_dir() / "packing.restart"))
+      << "pack the layer first (ctest runs the erosion_packing fixture)";
+  std::map<std::string, double> jet, end;
+  for (const std::string dt : {"1e-4", "5e-4"}) {
+    const auto out = cli::scratch("erosion_seed_case_dt_" + dt);
+    const std::string substeps = dt == "1e-4" ? "100" : "500";
+    const std::string every = dt == "1e-4" ? "100" : "20";  // a row every 0.01 s
+    const auto r = cli::run(cli::seed_case() + " --out " + out.string() +
+                            " --quiet --set inflow.velocity=0.005 --set "
+                            "'coupling.model=\"semi-resolved\"' --set time.end=1.0 --set time.dt=" +
+                            dt + " --set dem.substeps=" + substeps +
+                            " --set output.interval=0.5 --set output.diagnostics_every=" + every);
+    ASSERT_EQ(r.exit_code, 0) << dt << ": " << r.output;
+    const auto rows = cli::read_csv(out / "diagnostics.csv");
+    ASSERT_FALSE(rows.empty());
+    end[dt] = std::stod(rows.back().at("time"));
+    double sum = 0;
+    int n = 0;
+    for (const auto& row : rows)
+      if (std::stod(row.at("time")) >= 0.1 - 1e-9) {
+        sum += std::stod(row.at("max_pore_speed_ratio"));
+        ++n;
+      }
+    ASSERT_GT(n, 50);
+    jet[dt] = sum / n;
+  }
+  std::printf(
+      "case.toml, semi-resolved, 0.5 cm/s: pore jets (v_in), mean over 0.1-1 s: dt 1e-4 s "
+      "%.2f, 5e-4 s %.2f (%+.1f%%)\n",
+      jet["1e-4"], jet["5e-4"], 100 * (jet["5e-4"] / jet["1e-4"] - 1));
+  EXPECT_GT(end["1e-4"], 0.999);
+  EXPECT_GT(end["5e-4"], 0.999);
+  EXPECT_NEAR(jet["5e-4"], jet["1e-4"], 0.1 * jet["1e-4"]);
+  EXPECT_GT(jet["1e-4"], 15.0);  // the seed's jets, far above the unresolved model's 5-8
+}
+
+}  // namespace
+}  // namespace isphdem
