@@ -2,9 +2,10 @@
 // 384 grains, the seed's layer), semi-resolved at v_in = 0.5 cm/s, run through `isphdem` as the
 // README runs it, for 1 s at the seed's fluid step 1e-4 s and at 5e-4 s (the DEM step held at
 // 1e-6 s). With alpha_s = 0.001 per step the run at the seed's own step broke at 0.69 s (a fluid
-// particle in a pore at 17 m/s) and its pore jets read 32 v_in against 25 at 5e-4 s; with the
-// case's density relaxation time both reach 1 s and agree (issue 46; docs/internal_erosion.md,
-// "Time step").
+// particle in a pore at 17 m/s); with the case's density relaxation time both reach 1 s. Their
+// pore jets read 25.90 and 24.80 v_in. One run is one realization of a granular layer: v_in
+// changed by 2e-6 of itself gave 26.26 and 23.27, so the tolerance is 15%, not the 5% issue 46
+// asks of the step (docs/internal_erosion.md, "Time step").
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -50,7 +51,7 @@ TEST(ErosionSeedCase, SemiResolvedRunsAtTheSeedsStepAndPoreJetsAgreeAtFiveTimesI
       jet["1e-4"], jet["5e-4"], 100 * (jet["5e-4"] / jet["1e-4"] - 1));
   EXPECT_GT(end["1e-4"], 0.999);
   EXPECT_GT(end["5e-4"], 0.999);
-  EXPECT_NEAR(jet["5e-4"], jet["1e-4"], 0.1 * jet["1e-4"]);
+  EXPECT_NEAR(jet["5e-4"], jet["1e-4"], 0.15 * jet["1e-4"]);
   EXPECT_GT(jet["1e-4"], 15.0);  // the seed's jets, far above the unresolved model's 5-8
 }
 
