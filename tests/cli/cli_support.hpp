@@ -73,12 +73,17 @@ inline std::filesystem::path reduced_packing_dir() {
   return std::filesystem::path(ISPHDEM_BINARY_DIR) / "test_output" / "erosion_reduced_packing";
 }
 
-// examples/internal_erosion_2d/reduced.toml with the override that reads that packing, ready for
-// `isphdem run` (more --set may follow).
+// A case file of examples/internal_erosion_2d with the override that reads its packing from
+// packing_dir, ready for `isphdem run` (more --set may follow).
+inline std::string erosion_case_with_packing(const std::string& file,
+                                             const std::filesystem::path& packing_dir) {
+  return std::string(ISPHDEM_SOURCE_DIR) + "/examples/internal_erosion_2d/" + file +
+         " --set 'dem.variables.packing_dir=\"" + packing_dir.string() + "\"'";
+}
+
+// reduced.toml reading that packing.
 inline std::string reduced_case() {
-  return std::string(ISPHDEM_SOURCE_DIR) +
-         "/examples/internal_erosion_2d/reduced.toml --set 'dem.variables.packing_dir=\"" +
-         reduced_packing_dir().string() + "\"'";
+  return erosion_case_with_packing("reduced.toml", reduced_packing_dir());
 }
 
 // The seed's layer (examples/internal_erosion_2d/in.packing), written into the build tree by the
@@ -88,9 +93,7 @@ inline std::filesystem::path seed_packing_dir() {
 }
 
 inline std::string seed_case() {
-  return std::string(ISPHDEM_SOURCE_DIR) +
-         "/examples/internal_erosion_2d/case.toml --set 'dem.variables.packing_dir=\"" +
-         seed_packing_dir().string() + "\"'";
+  return erosion_case_with_packing("case.toml", seed_packing_dir());
 }
 
 inline void write_file(const std::filesystem::path& p, const std::string& text) {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "../cli/cli_support.hpp"
+#include "erosion_step_run.hpp"
 
 namespace isphdem {
 namespace {
@@ -97,25 +98,11 @@ TEST(ErosionReduced, SemiResolvedPoreJetsHoldFromOneToAQuarterMillisecondStep) {
       << "pack the layer first (ctest runs the erosion_reduced_packing fixture)";
   std::map<std::string, double> jet;
   for (const std::string dt : {"1e-3", "2.5e-4"}) {
-    const auto out = cli::scratch("erosion_reduced_dt_" + dt);
-    const std::string substeps = dt == "1e-3" ? "1000" : "250";
-    const std::string every = dt == "1e-3" ? "10" : "40";  // a row every 0.01 s
-    const auto r = cli::run(cli::reduced_case() + " --out " + out.string() +
-                            " --quiet --set inflow.velocity=0.005 --set "
-                            "'coupling.model=\"semi-resolved\"' --set time.end=0.3 --set time.dt=" +
-                            dt + " --set dem.substeps=" + substeps +
-                            " --set output.diagnostics_every=" + every);
-    ASSERT_EQ(r.exit_code, 0) << dt << ": " << r.output;
-    auto d = read_diagnostics(out);
-    double sum = 0;
-    int n = 0;
-    for (std::size_t k = 0; k < d["time"].size(); ++k)
-      if (d["time"][k] >= 0.1 - 1e-9) {
-        sum += d["max_pore_speed_ratio"][k];
-        ++n;
-      }
-    ASSERT_GT(n, 10);
-    jet[dt] = sum / n;
+    const auto run = erosion_test::run_semi_resolved_at_step(cli::reduced_case(),
+                                                             "erosion_reduced_dt_" + dt, dt, "0.3");
+    ASSERT_EQ(run.result.exit_code, 0) << dt << ": " << run.result.output;
+    ASSERT_GT(run.rows, 10);
+    jet[dt] = run.pore_jet;
   }
   std::printf("pore jets (v_in), mean over 0.1-0.3 s: dt 1e-3 s %.2f, 2.5e-4 s %.2f (%+.1f%%)\n",
               jet["1e-3"], jet["2.5e-4"], 100 * (jet["1e-3"] / jet["2.5e-4"] - 1));

@@ -9,11 +9,11 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <string>
 
 #include "../cli/cli_support.hpp"
+#include "erosion_step_run.hpp"
 
 namespace isphdem {
 namespace {
@@ -23,27 +23,12 @@ TEST(ErosionSeedCase, SemiResolvedRunsAtTheSeedsStepAndPoreJetsAgreeAtFiveTimesI
       << "pack the layer first (ctest runs the erosion_packing fixture)";
   std::map<std::string, double> jet, end;
   for (const std::string dt : {"1e-4", "5e-4"}) {
-    const auto out = cli::scratch("erosion_seed_case_dt_" + dt);
-    const std::string substeps = dt == "1e-4" ? "100" : "500";
-    const std::string every = dt == "1e-4" ? "100" : "20";  // a row every 0.01 s
-    const auto r = cli::run(cli::seed_case() + " --out " + out.string() +
-                            " --quiet --set inflow.velocity=0.005 --set "
-                            "'coupling.model=\"semi-resolved\"' --set time.end=1.0 --set time.dt=" +
-                            dt + " --set dem.substeps=" + substeps +
-                            " --set output.interval=0.5 --set output.diagnostics_every=" + every);
-    ASSERT_EQ(r.exit_code, 0) << dt << ": " << r.output;
-    const auto rows = cli::read_csv(out / "diagnostics.csv");
-    ASSERT_FALSE(rows.empty());
-    end[dt] = std::stod(rows.back().at("time"));
-    double sum = 0;
-    int n = 0;
-    for (const auto& row : rows)
-      if (std::stod(row.at("time")) >= 0.1 - 1e-9) {
-        sum += std::stod(row.at("max_pore_speed_ratio"));
-        ++n;
-      }
-    ASSERT_GT(n, 50);
-    jet[dt] = sum / n;
+    const auto run = erosion_test::run_semi_resolved_at_step(
+        cli::seed_case(), "erosion_seed_case_dt_" + dt, dt, "1.0", " --set output.interval=0.5");
+    ASSERT_EQ(run.result.exit_code, 0) << dt << ": " << run.result.output;
+    ASSERT_GT(run.rows, 50);
+    end[dt] = run.end_time;
+    jet[dt] = run.pore_jet;
   }
   std::printf(
       "case.toml, semi-resolved, 0.5 cm/s: pore jets (v_in), mean over 0.1-1 s: dt 1e-4 s "
