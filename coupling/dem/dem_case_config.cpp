@@ -56,7 +56,6 @@ std::string string_key(const toml::table& t, const std::string& key) {
   return *s;
 }
 
-
 // ${name} and $x of a LIGGGHTS input line with the values known; nullopt if one is unknown or
 // the line has an immediate $(...) expression.
 std::optional<std::string> substitute(const std::string& line,
@@ -133,9 +132,12 @@ void check_restart_files(const DemCaseConfig& c, const std::optional<std::string
     const auto w = words(*expanded);
     if (w.empty()) continue;
     if (w[0] == "variable" && w.size() >= 4) {
-      if (w[2] == "index" && !vars.count(w[1])) vars[w[1]] = w[3];
-      else if (w[2] == "string") vars[w[1]] = w[3];
-      else if (w[2] != "index") vars.erase(w[1]);
+      if (w[2] == "index" && !vars.count(w[1]))
+        vars[w[1]] = w[3];
+      else if (w[2] == "string")
+        vars[w[1]] = w[3];
+      else if (w[2] != "index")
+        vars.erase(w[1]);
     } else if (w[0] == "read_restart" && w.size() >= 2) {
       // LIGGGHTS opens it from the working directory; '*' is a step number, '%' per processor.
       if (w[1].find_first_of("*%") != std::string::npos) continue;
@@ -164,7 +166,7 @@ void check_restart_files(const DemCaseConfig& c, const std::optional<std::string
 }  // namespace
 
 std::vector<std::string> dem_table_keys() {
-  return {"script", "substeps", "variables", "log", "screen", "prepare"};
+  return {"script", "substeps", "exchange", "variables", "log", "screen", "prepare"};
 }
 
 DemCaseConfig parse_dem_table(const toml::table& dem, const std::filesystem::path& case_dir) {
@@ -190,6 +192,16 @@ DemCaseConfig parse_dem_table(const toml::table& dem, const std::filesystem::pat
   if (!n || *n < 1 || *n > 1000000000)
     throw bad("substeps", "must be an integer >= 1 (DEM steps per fluid step)");
   c.substeps = static_cast<int>(*n);
+  if (dem.contains("exchange")) {
+    const std::string e = string_key(dem, "exchange");
+    if (e == "staggered")
+      c.exchange = DemExchange::staggered;
+    else if (e != "sequential")
+      throw bad("exchange", "'" + e +
+                                "' is not an exchange: \"sequential\" (the DEM after the fluid "
+                                "step, with its loads) or \"staggered\" (the DEM beside it on a "
+                                "thread of its own, with the loads of the step before)");
+  }
 
   if (dem.contains("variables")) {
     const toml::table* vars = dem["variables"].as_table();

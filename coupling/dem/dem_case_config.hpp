@@ -4,6 +4,7 @@
 //   [dem]
 //   script = "in.liggghts"        # relative to the case file's directory
 //   substeps = 100                # n_sub >= 1: DEM steps per fluid step
+//   exchange = "staggered"        # optional: "sequential" (default) or "staggered"
 //   log = "log.liggghts"          # optional, as liggghts -log (relative: to the output dir)
 //   screen = "screen.liggghts"    # optional, as liggghts -screen (relative: to the output dir)
 //   [dem.variables]               # optional, as liggghts -var NAME VALUE
@@ -21,9 +22,16 @@
 
 namespace isphdem {
 
+// How the DEM steps against the fluid. Sequential: the fluid steps, then the DEM takes that
+// step's loads. Staggered: the DEM's substeps run on a thread of their own beside the fluid step,
+// with the loads of the fluid step before (lagged by one fluid step), so that a second core
+// carries them.
+enum class DemExchange { sequential, staggered };
+
 struct DemCaseConfig {
   std::filesystem::path script;  // resolved against the case directory
   int substeps = 1;
+  DemExchange exchange = DemExchange::sequential;
   std::vector<std::pair<std::string, std::string>> variables;  // sorted by name
   std::optional<std::string> log, screen;                      // as written
 

@@ -1,10 +1,13 @@
 #include "run/coupled_run.hpp"
 
+#include <mpi.h>
 #include <omp.h>
 
 #include <cmath>
+#include <exception>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "dem/dem_case_config.hpp"
 #include "format_number.hpp"
@@ -21,13 +24,26 @@ using isph::Stopwatch;
 
 template <int Dim>
 CoupledRun<Dim>::CoupledRun(FluidScene<Dim> scene, const RunSettings& settings, DemBackend& backend,
-                            int substeps, std::vector<std::unique_ptr<CouplingStage<Dim>>> stages)
+                            int substeps, std::vector<std::unique_ptr<CouplingStage<Dim>>> stages,
+                            DemExchange exchange)
     : fluid_(std::move(scene), settings),
       backend_(backend),
       substeps_(substeps),
       dt_(settings.fixed_dt.value_or(0.0)),
       stages_(std::move(stages)),
+      exchange_(exchange),
       energy_(0.1 * fluid_.solver().particles().spacing / (dt_ > 0 ? dt_ : 1.0)) {
+  timings_.staggered = exchange_ == DemExchange::staggered;
+  if (timings_.staggered) {
+    int level = MPI_THREAD_SINGLE;
+    MPI_Query_thread(&level);
+    if (level < MPI_THREAD_MULTIPLE)
+      throw CaseError(
+          "dem.exchange = \"staggered\" steps LIGGGHTS on a thread of its own beside the "
+          "fluid, and both call MPI: this process's MPI was started without "
+          "MPI_THREAD_MULTIPLE. Use dem.exchange = \"sequential\", or an MPI built with "
+          "thread support (ompi_info | grep -i thread)");
+  }
   // The DEM advances a whole number of its own steps per fluid step, so an automatic fluid dt
   // (changing every step) cannot be honoured.
   if (!settings.fixed_dt)
@@ -49,13 +65,11 @@ CoupledRun<Dim>::CoupledRun(FluidScene<Dim> scene, const RunSettings& settings, 
 }
 
 template <int Dim>
-isph::StepStats CoupledRun<Dim>::advance() {
+isph::StepStats CoupledRun<Dim>::fluid_step(const DemState& state, DemLoads& loads) {
   auto& solver = fluid_.solver();
   isph::StepStats stats;
   {
     Stopwatch w(timings_.coupling);
-    const DemState& state = backend_.state();
-    atoms_before_ = state.atoms;
     for (auto& s : stages_) s->move_particles(state, solver);
     solver.redistribute();  // decomposed: the stages map the particles the step will step
     for (auto& s : stages_) s->before_fluid_step(state, solver);
@@ -64,16 +78,70 @@ isph::StepStats CoupledRun<Dim>::advance() {
     Stopwatch w(timings_.fluid);
     stats = solver.step(dt_);
   }
-  {
-    Stopwatch w(timings_.coupling);
-    const DemState& state = backend_.state();
-    loads_ = DemLoads{};
-    for (auto& s : stages_) s->after_fluid_step(state, solver, dt_, loads_);
-  }
-  Stopwatch w(timings_.dem);
-  backend_.set_atom_loads(loads_.atom_tags, loads_.atom_force, loads_.atom_torque);
-  backend_.set_body_loads(loads_.body_ids, loads_.body_force, loads_.body_torque);
+  Stopwatch w(timings_.coupling);
+  loads = DemLoads{};
+  for (auto& s : stages_) s->after_fluid_step(state, solver, dt_, loads);
+  return stats;
+}
+
+template <int Dim>
+void CoupledRun<Dim>::hand_loads_to_dem(const DemLoads& loads) {
+  backend_.set_atom_loads(loads.atom_tags, loads.atom_force, loads.atom_torque);
+  backend_.set_body_loads(loads.body_ids, loads.body_force, loads.body_torque);
   backend_.advance(substeps_);
+}
+
+template <int Dim>
+isph::StepStats CoupledRun<Dim>::advance() {
+  if (exchange_ == DemExchange::staggered && have_loads_) return advance_staggered();
+  const DemState& state = backend_.state();
+  atoms_before_ = state.atoms;
+  const isph::StepStats stats = fluid_step(state, loads_);
+  have_loads_ = true;
+  {
+    Stopwatch w(timings_.dem);
+    hand_loads_to_dem(loads_);
+  }
+  check_no_grain_lost(backend_.state());
+  check_overlap(backend_.state());
+  check_energy(backend_.state());
+  return stats;
+}
+
+// The DEM steps from t to t + dt with the loads of the fluid step that ended at t, on a thread
+// of its own, while the fluid steps from t to t + dt with the grains as they are at t: the two
+// halves of a sequential step, each on a core. The fluid's thread writes nothing the DEM's
+// reads (loads_ is replaced only after the join, the fluid sees a copy of the state), and
+// LIGGGHTS is called from one thread at a time.
+template <int Dim>
+isph::StepStats CoupledRun<Dim>::advance_staggered() {
+  const DemState state = backend_.state();  // a copy: the DEM moves on while the fluid uses it
+  atoms_before_ = state.atoms;
+  std::exception_ptr dem_error;
+  double dem_seconds = 0.0;
+  std::thread dem([&] {
+    try {
+      Stopwatch w(dem_seconds);
+      hand_loads_to_dem(loads_);
+    } catch (...) {
+      dem_error = std::current_exception();
+    }
+  });
+  DemLoads next;
+  isph::StepStats stats;
+  try {
+    stats = fluid_step(state, next);
+  } catch (...) {
+    dem.join();  // the DEM's error, if any, is the later one: the fluid's is said
+    throw;
+  }
+  {
+    Stopwatch w(timings_.dem_wait);
+    dem.join();
+  }
+  timings_.dem += dem_seconds;
+  if (dem_error) std::rethrow_exception(dem_error);
+  loads_ = std::move(next);
   check_no_grain_lost(backend_.state());
   check_overlap(backend_.state());
   check_energy(backend_.state());
@@ -216,6 +284,7 @@ void CoupledRun<Dim>::restore(const StageState& s) {
   l.body_force = get_vectors(s, "body_force", l.body_ids.size());
   l.body_torque = get_vectors(s, "body_torque", l.body_ids.size());
   loads_ = std::move(l);
+  have_loads_ = true;  // staggered: the next DEM substeps take these, as in the run saved
   max_overlap_ = entry(s, "max_overlap").at(0);
   energy_.restore(entry(s, "energy"));
   for (std::size_t k = 0; k < stages_.size(); ++k) {

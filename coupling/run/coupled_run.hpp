@@ -10,15 +10,19 @@
 
 #include "coupling_stage.hpp"
 #include "dem/dem_backend.hpp"
+#include "dem/dem_case_config.hpp"
 #include "run/energy_growth.hpp"
 #include "run/fluid_run.hpp"
 
 namespace isphdem {
 
-// Wall seconds spent per part of the coupled step.
+// Wall seconds spent per part of the coupled step. Staggered (DemExchange), `dem` is the DEM
+// thread's own time, spent beside coupling and fluid; `dem_wait` is what the fluid's thread
+// waited for it at the end of its step, and the run's wall time is coupling + fluid + dem_wait.
 struct CoupledTimings {
-  double dem = 0, coupling = 0, fluid = 0;
-  double total() const { return dem + coupling + fluid; }
+  double dem = 0, coupling = 0, fluid = 0, dem_wait = 0;
+  bool staggered = false;
+  double total() const { return staggered ? coupling + fluid + dem_wait : dem + coupling + fluid; }
 };
 
 template <int Dim>
@@ -26,10 +30,15 @@ class CoupledRun {
  public:
   // The backend must be initialized. Checks settings.fixed_dt == substeps x DEM dt (throws
   // CaseError naming both and the matching values) and calls every stage's initialize().
+  // Staggered needs MPI_THREAD_MULTIPLE (CaseError otherwise) and, on several ranks, a backend
+  // on a communicator of its own: the DEM's collectives run beside the fluid's.
   CoupledRun(FluidScene<Dim> scene, const RunSettings& settings, DemBackend& backend, int substeps,
-             std::vector<std::unique_ptr<CouplingStage<Dim>>> stages);
+             std::vector<std::unique_ptr<CouplingStage<Dim>>> stages,
+             DemExchange exchange = DemExchange::sequential);
 
-  // One fluid step of dt with the exchange before and after, then `substeps` DEM steps. Throws
+  // One fluid step of dt with the exchange before and after, then `substeps` DEM steps
+  // (staggered: the DEM's substeps beside the fluid step, with the last step's loads; the first
+  // step after start, with no loads yet, is sequential). Throws
   // isph::SimulationError when a grain has gone from the DEM in those substeps: LIGGGHTS drops a
   // grain that crosses a fixed boundary without a word (thermo_modify lost defaults to ignore).
   isph::StepStats advance();
@@ -43,7 +52,8 @@ class CoupledRun {
   isph::IsphSolver<Dim>& solver() { return fluid_.solver(); }
   const isph::IsphSolver<Dim>& solver() const { return fluid_.solver(); }
   DemBackend& dem() { return backend_; }
-  // The loads handed to the DEM in the last step (the hydrodynamic loads of the output).
+  // The loads of the last fluid step (the hydrodynamic loads of the output): sequential, the DEM
+  // has taken them; staggered, its next substeps take them.
   const DemLoads& loads() const { return loads_; }
   const std::vector<std::unique_ptr<CouplingStage<Dim>>>& stages() const { return stages_; }
   const CoupledTimings& timings() const { return timings_; }
@@ -62,6 +72,12 @@ class CoupledRun {
   int substeps_;
   double dt_;
   std::vector<std::unique_ptr<CouplingStage<Dim>>> stages_;
+  DemExchange exchange_;
+  bool have_loads_ = false;  // loads_ hold a fluid step's loads (staggered hands them on)
+  // The fluid step from `state` (stages before, step, stages after into `loads`).
+  isph::StepStats fluid_step(const DemState& state, DemLoads& loads);
+  void hand_loads_to_dem(const DemLoads& loads);
+  isph::StepStats advance_staggered();
   void check_no_grain_lost(const DemState& now) const;
   // Throws isph::SimulationError (cause "grain_overlap") past kMaxGrainOverlap.
   void check_overlap(const DemState& now);

@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
   }
   if (!sub->mpi) return run_subcommand(*sub, argc, argv);
   int provided = 0;
-  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_MULTIPLE, &provided);  // dem.exchange = "staggered"
   const int rc = run_subcommand(*sub, argc, argv);
   MPI_Finalize();
   return rc;

@@ -21,6 +21,7 @@
 #include "case/run_settings.hpp"
 #include "case/verb_arguments.hpp"
 #include "dem/dem_case_config.hpp"
+#include "dem/dem_communicator.hpp"
 #include "dem/dem_liggghts_backend.hpp"
 #include "dem/dem_run_case.hpp"
 #include "io/dem_snapshot.hpp"
@@ -147,7 +148,10 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   for (const auto& e : ErosionDiagnostics<Dim>::columns()) columns.push_back(e);
   report.check_columns(columns);
   if (rank == 0) fs::create_directories(args.out);
-  LiggghtsBackend backend(dem.liggghts_args(args.out));
+  // Staggered, LIGGGHTS's collectives run beside the fluid's: on a communicator of their own.
+  // Declared before the backend, so that it is freed after it.
+  const DemCommunicator dem_comm(dem.exchange == DemExchange::staggered);
+  LiggghtsBackend backend(dem.liggghts_args(args.out), dem_comm.get());
   // Resumed: the fluid and the run's loop from this rank's file, the grains from LIGGGHTS's
   // restart in the checkpoint, read where the script reads its own.
   Checkpoints checkpoints(args.out, settings.checkpoint_interval, MPI_COMM_WORLD);
@@ -187,7 +191,8 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   }();
   if (choose) stages = make_coupling_stages<Dim>(c, scene, dt, rank == 0 && !args.resume);
   const GrainModels models = grain_models(coupling_model(c));
-  CoupledRun<Dim> run(std::move(scene), settings, backend, dem.substeps, std::move(stages));
+  CoupledRun<Dim> run(std::move(scene), settings, backend, dem.substeps, std::move(stages),
+                      dem.exchange);
   auto& solver = run.solver();
   const auto& P = solver.particles();
   const UnresolvedCoupling<Dim>* unresolved = nullptr;
@@ -358,12 +363,19 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   if (talk) {
     const double wall = omp_get_wtime() - start;
     const auto& t = run.timings();
-    std::printf(
-        "done: t = %g s in %ld fluid steps, %s wall, %.1f PPE iterations/step\n"
-        "  time per part: DEM substeps %.0f%%, coupling (mapping, drag) %.0f%%, ISPH %.0f%%\n",
-        solver.time(), solver.steps(), format_duration(wall).c_str(),
-        solver.steps() ? double(ppe_total) / solver.steps() : 0.0, 100 * t.dem / t.total(),
-        100 * t.coupling / t.total(), 100 * t.fluid / t.total());
+    std::printf("done: t = %g s in %ld fluid steps, %s wall, %.1f PPE iterations/step\n",
+                solver.time(), solver.steps(), format_duration(wall).c_str(),
+                solver.steps() ? double(ppe_total) / solver.steps() : 0.0);
+    if (t.staggered)
+      std::printf(
+          "  time per part: coupling (mapping, drag) %.0f%%, ISPH %.0f%%, waiting for the DEM "
+          "%.0f%%; DEM substeps beside them %s\n",
+          100 * t.coupling / t.total(), 100 * t.fluid / t.total(), 100 * t.dem_wait / t.total(),
+          format_duration(t.dem).c_str());
+    else
+      std::printf(
+          "  time per part: DEM substeps %.0f%%, coupling (mapping, drag) %.0f%%, ISPH %.0f%%\n",
+          100 * t.dem / t.total(), 100 * t.coupling / t.total(), 100 * t.fluid / t.total());
     print_ppe_cost(solver);
   }
   return 0;

@@ -41,24 +41,30 @@ TEST(CoupledMpi, ErosionLayerMatchesOneRank) {
   // step's pressure into the next projection, and with it the ranks' AMG round-off: measured
   // 9.7e-5 v_in in the grains' and 2.2e-6 v_in in the fluid's velocities after 20 steps (fluid
   // rows: 3.7e-7 and 2.6e-8). Held to 1e-3 v_in until that growth is understood (docs/resolved.md).
+  // The unresolved layer runs once more with the DEM beside the fluid (dem.exchange =
+  // "staggered"): LIGGGHTS on its own thread and communicator, its collectives beside the fluid's.
   struct Variant {
     const char* model;
     const char* end;
     const char* projection;
     double velocity_tolerance;
+    const char* exchange = "sequential";
   };
   for (const Variant& v : {Variant{"unresolved", "0.02", "increment", 1e-6},
+                           Variant{"unresolved", "0.02", "increment", 1e-6, "staggered"},
                            Variant{"semi-resolved", "0.002", "fluid", 1e-6},
                            Variant{"semi-resolved", "0.002", "increment", 1e-3}}) {
     const std::string model = v.model, end = v.end;
-    const auto out = scratch("coupled_mpi_erosion_layer_" + model + "_" + v.projection);
+    const auto out =
+        scratch("coupled_mpi_erosion_layer_" + model + "_" + v.projection + "_" + v.exchange);
     for (const int np : {1, ranks()}) {
       const Result r = mpirun_run(
           np, reduced_case() + " --out " + (out / std::to_string(np)).string() +
                   " --quiet --set solver.preconditioner=amg --set solver.pressure_tolerance=1e-10"
                   " --set coupling.model=" +
                   model + " --set time.end=" + end + " --set output.interval=" + end +
-                  " --set 'solver.pms_projection=\"" + v.projection + "\"'");
+                  " --set 'solver.pms_projection=\"" + v.projection + "\"'" +
+                  " --set 'dem.exchange=\"" + v.exchange + "\"'");
       ASSERT_EQ(r.exit_code, 0) << r.output;
     }
     const std::string result = read_file(out / std::to_string(ranks()) / "result.json");
@@ -76,10 +82,10 @@ TEST(CoupledMpi, ErosionLayerMatchesOneRank) {
                  fluid_dv = max_difference(fa.v, fb.v) / 5e-3;
     const double dp = max_difference(fa.p, fb.p) / max_abs(fa.p);
     std::printf(
-        "erosion layer (%s, PMS rows %s), 1 vs %d ranks at %s: grains |dx| = %.2e dx, |dv| = "
-        "%.2e v_in; fluid |dx| = %.2e dx, |dv| = %.2e v_in, |dp| = %.2e max|p|\n",
-        model.c_str(), v.projection, ranks(), a_file.filename().c_str(), grain_dx, grain_dv,
-        fluid_dx, fluid_dv, dp);
+        "erosion layer (%s, PMS rows %s, %s exchange), 1 vs %d ranks at %s: grains |dx| = %.2e "
+        "dx, |dv| = %.2e v_in; fluid |dx| = %.2e dx, |dv| = %.2e v_in, |dp| = %.2e max|p|\n",
+        model.c_str(), v.projection, v.exchange, ranks(), a_file.filename().c_str(), grain_dx,
+        grain_dv, fluid_dx, fluid_dv, dp);
     EXPECT_LE(grain_dx, 1e-6);
     EXPECT_LE(grain_dv, v.velocity_tolerance);
     EXPECT_LE(fluid_dx, 1e-6);

@@ -120,6 +120,22 @@ TEST_F(ResumeCoupled, AfterSigtermItEndsWithinTenMicrometres) {
   expect_close_to(out, dir_ / "ref");
 }
 
+// With the DEM beside the fluid (dem.exchange = "staggered") the DEM's next substeps take the
+// loads of the fluid step before them: the checkpoint holds those, and the resumed run hands
+// them on as the run never stopped would.
+TEST(ResumeCoupledStaggered, FromACheckpointItEndsWithinTenMicrometres) {
+  const fs::path dir = scratch("resume_coupled_staggered");
+  const std::string staggered = kCase + " --set 'dem.exchange=\"staggered\"'";
+  const Result ref = run(staggered + " --set time.end=0.05 --out " + (dir / "ref").string());
+  ASSERT_EQ(ref.exit_code, 0) << ref.output;
+  const fs::path out = dir / "out";
+  const Result first = run(staggered + " --set time.end=0.02 --out " + out.string());
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  const Result more = run(staggered + " --set time.end=0.05 --out " + out.string() + " --resume");
+  ASSERT_EQ(more.exit_code, 0) << more.output;
+  expect_close_to(out, dir / "ref");
+}
+
 // The settling grain's script creates its grain (no read_restart): its checkpoints cannot be
 // resumed, which --resume says, leaving the output as it was.
 TEST(ResumeCoupledRefused, AScriptThatReadsNoRestartIsRefused) {

@@ -10,6 +10,7 @@
 #include "case/fluid_scene.hpp"
 #include "case/run_settings.hpp"
 #include "dem/dem_case_config.hpp"
+#include "dem/dem_communicator.hpp"
 #include "dem/dem_liggghts_backend.hpp"
 #include "run/case_keys.hpp"
 #include "run/coupled_run.hpp"
@@ -26,6 +27,7 @@ inline CaseFile load_coupled_example(const std::string& name,
 
 template <int Dim>
 struct CoupledCase {
+  std::unique_ptr<DemCommunicator> comm;  // before the backend: freed after it
   std::unique_ptr<LiggghtsBackend> backend;
   std::unique_ptr<CoupledRun<Dim>> run;
   const UnresolvedCoupling<Dim>* unresolved = nullptr;
@@ -41,10 +43,11 @@ CoupledCase<Dim> make_coupled_case(const CaseFile& c, const std::filesystem::pat
   auto stages = make_coupling_stages<Dim>(c, scene, settings.fixed_dt.value_or(0.0));
   CoupledCase<Dim> out;
   out.unresolved = dynamic_cast<const UnresolvedCoupling<Dim>*>(stages.front().get());
-  out.backend = std::make_unique<LiggghtsBackend>(dem.liggghts_args(out_dir));
+  out.comm = std::make_unique<DemCommunicator>(dem.exchange == DemExchange::staggered);
+  out.backend = std::make_unique<LiggghtsBackend>(dem.liggghts_args(out_dir), out.comm->get());
   out.backend->initialize({dem.script, {}});
   out.run = std::make_unique<CoupledRun<Dim>>(std::move(scene), settings, *out.backend,
-                                              dem.substeps, std::move(stages));
+                                              dem.substeps, std::move(stages), dem.exchange);
   return out;
 }
 

@@ -45,6 +45,7 @@ TEST_F(DemTable, ParsesAllKeys) {
                            dir_);
   EXPECT_EQ(c.script, dir_ / "in.test");
   EXPECT_EQ(c.substeps, 100);
+  EXPECT_EQ(c.exchange, isphdem::DemExchange::sequential);  // the default
   ASSERT_EQ(c.variables.size(), 5u);
   // Sorted by name; case_dir added for the script's own files.
   const std::string dir = fs::absolute(dir_).lexically_normal().string();
@@ -59,7 +60,11 @@ TEST_F(DemTable, ParsesAllKeys) {
                                    "nGrains", "500",          "-var",    "name",     "fine",
                                    "-log",    "/out/log.dem", "-screen", "/dev/null"};
   EXPECT_EQ(args, want);
-  EXPECT_EQ(isphdem::dem_table_keys().size(), 6u);
+  EXPECT_EQ(isphdem::dem_table_keys().size(), 7u);
+  EXPECT_EQ(
+      parse_dem_table(table("script = \"in.test\"\nsubsteps = 1\nexchange = \"staggered\"\n"), dir_)
+          .exchange,
+      isphdem::DemExchange::staggered);
 }
 
 TEST_F(DemTable, CaseDirVariableCanBeOverridden) {
@@ -86,6 +91,10 @@ TEST_F(DemTable, BadValuesNameTheKey) {
             std::string::npos);
   EXPECT_NE(error_of("script = \"in.test\"\nsubsteps = 1\nscreen = \"none\"\n").find("crash"),
             std::string::npos);
+  const auto exchange = error_of("script = \"in.test\"\nsubsteps = 1\nexchange = \"parallel\"\n");
+  EXPECT_NE(exchange.find("[dem] exchange: 'parallel' is not an exchange"), std::string::npos)
+      << exchange;
+  EXPECT_NE(exchange.find("\"staggered\""), std::string::npos) << exchange;
   EXPECT_NE(error_of("script = \"in.test\"\nsubsteps = 1\nvariables = 3\n").find("[dem] variables"),
             std::string::npos);
   EXPECT_NE(error_of("script = \"in.test\"\nsubsteps = 1\n[variables]\n\"a b\" = 1\n")
@@ -98,12 +107,11 @@ TEST_F(DemTable, BadValuesNameTheKey) {
 // The path is expanded as LIGGGHTS does: -var values (the [dem.variables]) over index defaults,
 // ${name} and $x, `&` continuations, comments.
 TEST_F(DemTable, MissingRestartNamesFileLineAndPrepareCommand) {
-  std::ofstream(dir_ / "in.restart")
-      << "variable packing index packing.restart  # default\n"
-         "variable packing_dir index ${case_dir}\n"
-         "atom_modify map array\n"
-         "read_restart &\n"
-         "    ${packing_dir}/$p_${packing} # p is set by the case\n";
+  std::ofstream(dir_ / "in.restart") << "variable packing index packing.restart  # default\n"
+                                        "variable packing_dir index ${case_dir}\n"
+                                        "atom_modify map array\n"
+                                        "read_restart &\n"
+                                        "    ${packing_dir}/$p_${packing} # p is set by the case\n";
   const std::string dir = fs::absolute(dir_).lexically_normal().string();
   const auto e = error_of(
       "script = \"in.restart\"\nsubsteps = 1\n"
