@@ -17,6 +17,21 @@ double bed_height(const DemState& state, const Vec3& up) {
   return h[static_cast<std::size_t>(0.95 * double(h.size() - 1))];
 }
 
+void set_pore_speeds(ErosionMeasures& m) {
+  std::vector<double> r = m.pore_speed_ratios;
+  m.max_pore_speed_ratio = m.pore_speed_p95_ratio = m.mean_pore_speed_ratio = 0.0;
+  if (r.empty()) return;
+  std::sort(r.begin(), r.end());
+  m.max_pore_speed_ratio = r.back();
+  const double at = 0.95 * double(r.size() - 1);
+  const std::size_t k = static_cast<std::size_t>(at);
+  const double f = at - double(k);
+  m.pore_speed_p95_ratio = k + 1 < r.size() ? (1 - f) * r[k] + f * r[k + 1] : r[k];
+  double sum = 0.0;
+  for (double x : r) sum += x;
+  m.mean_pore_speed_ratio = sum / double(r.size());
+}
+
 template <int Dim>
 int ErosionDiagnostics<Dim>::across_axis() const {
   // The horizontal axis of the fluid plane: the first axis with no gravity component.
@@ -98,9 +113,9 @@ ErosionMeasures ErosionDiagnostics<Dim>::measure(const DemState& dem,
     const double z = height(x);
     if (z < bottom0_ || z > surface0_ || x[h] < lo0_ || x[h] > hi0_) continue;
     const double eps = fluid.porosity[i] > 0 ? fluid.porosity[i] : 1.0;
-    m.max_pore_speed_ratio = std::max(m.max_pore_speed_ratio, fluid.v[i].norm() / eps);
+    m.pore_speed_ratios.push_back(fluid.v[i].norm() / eps / reference_speed_);
   }
-  m.max_pore_speed_ratio /= reference_speed_;
+  set_pore_speeds(m);
   int n = 0;
   for (const auto& b : dem.bodies) {
     const auto it = body0_.find(b.id);
@@ -116,14 +131,16 @@ ErosionMeasures ErosionDiagnostics<Dim>::measure(const DemState& dem,
 
 template <int Dim>
 std::vector<std::string> ErosionDiagnostics<Dim>::columns() {
-  return {"fines_above_surface",  "fines_above_mass", "fines_out_of_window",
-          "max_pore_speed_ratio", "surface_height",   "skeleton_displacement"};
+  return {"fines_above_surface",  "fines_above_mass",     "fines_out_of_window",
+          "max_pore_speed_ratio", "surface_height",       "skeleton_displacement",
+          "pore_speed_p95_ratio", "mean_pore_speed_ratio"};
 }
 
 template <int Dim>
 std::vector<double> ErosionDiagnostics<Dim>::row(const ErosionMeasures& m) {
-  return {double(m.fines_above),  m.fines_above_mass, double(m.fines_out_of_window),
-          m.max_pore_speed_ratio, m.surface_height,   m.skeleton_displacement};
+  return {double(m.fines_above),  m.fines_above_mass,     double(m.fines_out_of_window),
+          m.max_pore_speed_ratio, m.surface_height,       m.skeleton_displacement,
+          m.pore_speed_p95_ratio, m.mean_pore_speed_ratio};
 }
 
 template class ErosionDiagnostics<2>;

@@ -273,7 +273,8 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
       ErosionMeasures em = erosion.measure(state, P);
       if (const isph::RowShare* ranks = solver.decomposition()) {
         emin = -ranks->max(-emin);
-        em.max_pore_speed_ratio = ranks->max(em.max_pore_speed_ratio);
+        em.pore_speed_ratios = ranks->concatenate(em.pore_speed_ratios);
+        set_pore_speeds(em);
       }
       if (rank == 0) {
         auto speed = [](const Vec3& v) {

@@ -91,6 +91,17 @@ TEST(CoupledMpi, ErosionLayerMatchesOneRank) {
     EXPECT_LE(fluid_dx, 1e-6);
     EXPECT_LE(fluid_dv, v.velocity_tolerance);
     EXPECT_LE(dp, v.velocity_tolerance);
+    // The pore speeds' percentile and mean over the layer's fluid, every rank's particles once
+    // (diagnostics rows every 100 steps: the unresolved runs have two).
+    const auto rows_a = read_csv(out / "1" / "diagnostics.csv"),
+               rows_b = read_csv(out / std::to_string(ranks()) / "diagnostics.csv");
+    ASSERT_EQ(rows_a.size(), rows_b.size());
+    for (std::size_t k = 0; k < rows_a.size(); ++k)
+      for (const char* c :
+           {"max_pore_speed_ratio", "pore_speed_p95_ratio", "mean_pore_speed_ratio"})
+        EXPECT_NEAR(std::stod(rows_a[k].at(c)), std::stod(rows_b[k].at(c)),
+                    10 * v.velocity_tolerance)
+            << c << " at row " << k;
   }
 }
 
