@@ -112,7 +112,9 @@ isph::StepStats CoupledRun<Dim>::advance() {
 // of its own, while the fluid steps from t to t + dt with the grains as they are at t: the two
 // halves of a sequential step, each on a core. The fluid's thread writes nothing the DEM's
 // reads (loads_ is replaced only after the join, the fluid sees a copy of the state), and
-// LIGGGHTS is called from one thread at a time.
+// LIGGGHTS is called from one thread at a time. While LIGGGHTS runs it holds the process's
+// stdout on its screen file (LiggghtsStdoutToScreen): what the fluid's step printed on stdout
+// then would land there; it prints its warnings on stderr.
 template <int Dim>
 isph::StepStats CoupledRun<Dim>::advance_staggered() {
   const DemState state = backend_.state();  // a copy: the DEM moves on while the fluid uses it
