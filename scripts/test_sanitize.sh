@@ -41,6 +41,13 @@ elif ! grep -q "malformed case file" "$probe_dir/stderr"; then
 fi
 jobs="${CTEST_PARALLEL_LEVEL:-$(env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc)}"
 export OMP_NUM_THREADS="${OMP_NUM_THREADS:-1}"
-if [ $# -eq 0 ]; then set -- -L unit -LE "slow|work_in_progress"; fi
+# Left out by default: Study.UnresolvedSettlingHoldsBelowHalfASpacingAndDepartsAtOne, two full
+# settling-grain runs through a study (34 s in the default suite, 5-6 min under the sanitizers:
+# the longest there); the unresolved coupling and the study driver are in the sanitized tests
+# through the other Study.* and the coupled unit tests. Give arguments to run a set of your own.
+if [ $# -eq 0 ]; then
+  set -- -L unit -LE "slow|work_in_progress" \
+    -E '^Study\.UnresolvedSettlingHoldsBelowHalfASpacingAndDepartsAtOne$'
+fi
 ctest --test-dir "${ISPHDEM_SANITIZE_BUILD_DIR:-$root/build-sanitize}" --output-on-failure \
   -j "$jobs" "$@"
