@@ -102,9 +102,7 @@ isph::StepStats CoupledRun<Dim>::advance() {
     Stopwatch w(timings_.dem);
     hand_loads_to_dem(loads_);
   }
-  check_no_grain_lost(backend_.state());
-  check_overlap(backend_.state());
-  check_energy(backend_.state());
+  check_grains();
   return stats;
 }
 
@@ -144,10 +142,16 @@ isph::StepStats CoupledRun<Dim>::advance_staggered() {
   timings_.dem += dem_seconds;
   if (dem_error) std::rethrow_exception(dem_error);
   loads_ = std::move(next);
-  check_no_grain_lost(backend_.state());
-  check_overlap(backend_.state());
-  check_energy(backend_.state());
+  check_grains();
   return stats;
+}
+
+template <int Dim>
+void CoupledRun<Dim>::check_grains() {
+  const DemState& now = backend_.state();
+  check_no_grain_lost(now);
+  check_overlap(now);
+  check_energy(now);
 }
 
 template <int Dim>

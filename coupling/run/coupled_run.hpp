@@ -78,6 +78,8 @@ class CoupledRun {
   isph::StepStats fluid_step(const DemState& state, DemLoads& loads);
   void hand_loads_to_dem(const DemLoads& loads);
   isph::StepStats advance_staggered();
+  // After the DEM substeps, the three checks below on the grains as they are now.
+  void check_grains();
   void check_no_grain_lost(const DemState& now) const;
   // Throws isph::SimulationError (cause "grain_overlap") past kMaxGrainOverlap.
   void check_overlap(const DemState& now);

@@ -18,7 +18,7 @@ double bed_height(const DemState& state, const Vec3& up) {
 }
 
 void set_pore_speeds(ErosionMeasures& m) {
-  std::vector<double> r = m.pore_speed_ratios;
+  std::vector<double>& r = m.pore_speed_ratios;
   m.max_pore_speed_ratio = m.pore_speed_p95_ratio = m.mean_pore_speed_ratio = 0.0;
   if (r.empty()) return;
   std::sort(r.begin(), r.end());

@@ -27,7 +27,7 @@ struct ErosionMeasures {
   // Largest interstitial fluid speed |v_D| / eps among fluid particles inside the initial layer,
   // divided by the reference speed (v_in).
   double max_pore_speed_ratio = 0;
-  // The same speeds' 95th percentile and mean (pore_speeds_ratios): the jets' measure that one
+  // The same speeds' 95th percentile and mean (pore_speed_ratios): the jets' measure that one
   // particle does not decide. The maximum of a few hundred particles' speeds moved by 15% between
   // two realizations of the seed's layer where these moved by 5% (docs/internal_erosion.md).
   double pore_speed_p95_ratio = 0, mean_pore_speed_ratio = 0;
@@ -39,8 +39,8 @@ struct ErosionMeasures {
   double skeleton_displacement = 0;  // mean in-plane displacement of the clumps' centres [m]
 };
 
-// Sets max, 95th percentile (linear between ranks) and mean of m.pore_speed_ratios (all zero when
-// it is empty).
+// Sorts m.pore_speed_ratios and sets their max, 95th percentile (linear between ranks) and mean
+// (all zero when it is empty).
 void set_pore_speeds(ErosionMeasures& m);
 
 template <int Dim>
