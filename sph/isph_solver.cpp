@@ -2,6 +2,8 @@
 // themselves are in step_*.cpp).
 #include "isph_solver.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -180,47 +182,75 @@ void IsphSolver<Dim>::update_forcing_kinds() {
 template <int Dim>
 StepStats IsphSolver<Dim>::step(double dt) {
   if (!(dt > 0.0) || !std::isfinite(dt)) throw SimulationError("time step must be positive");
-  blocked_ = decomposition_ || (share_->parts() > 1 && linear_solver_->distributed_rows() &&
-                                unit_solver_->distributed_rows());
-  if (!redistributed_) redistribute();
-  redistributed_ = false;
-  update_forcing_kinds();
-  if (!surface_columns_.empty() && steps_ > 0 && steps_ % config_.surface_remesh_every == 0)
-    remesh_surface();
-  find_neighbors();  // the pair geometry and weights every stage below reuses
+  double* const stage = timings_.stage;
+  {
+    Stopwatch w(stage[kStageOther]);
+    blocked_ = decomposition_ || (share_->parts() > 1 && linear_solver_->distributed_rows() &&
+                                  unit_solver_->distributed_rows());
+    if (!redistributed_) redistribute();
+    redistributed_ = false;
+    update_forcing_kinds();
+    if (!surface_columns_.empty() && steps_ > 0 && steps_ % config_.surface_remesh_every == 0)
+      remesh_surface();
+  }
+  {
+    Stopwatch w(stage[kStageNeighbors]);
+    find_neighbors();  // the pair geometry and weights every stage below reuses
+  }
   {
     Stopwatch w(timings_.operators);
-    detect_free_surface();
+    {
+      Stopwatch s(stage[kStageSurface]);
+      detect_free_surface();
+    }
+    Stopwatch s(stage[kStageOperators]);
     compute_operator_weights();
   }
   StepStats stats;
   stats.dt = dt;
   {
     Stopwatch w(timings_.rest);
-    compute_wall_ghosts();
-    compute_eddy_viscosity();
-    predict(dt);
-    set_wall_u_star(dt);
-    mark_full_support();
+    {
+      Stopwatch s(stage[kStagePredictor]);
+      compute_wall_ghosts();
+      compute_eddy_viscosity();
+      predict(dt);
+      set_wall_u_star(dt);
+      mark_full_support();
+    }
+    Stopwatch s(stage[kStageRhs]);
     compute_pressure_rhs(dt);
   }
   {
     Stopwatch w(timings_.assembly);
+    Stopwatch s(stage[kStageAssembly]);
     assemble_pressure_system();
   }
   {
     Stopwatch w(timings_.solve);
+    const double setup = timings_.solve_setup;
+    const double t0 = omp_get_wtime();
     solve_pressure(stats);
+    stage[kStageSolveSetup] += timings_.solve_setup - setup;
+    stage[kStageSolveIterations] += omp_get_wtime() - t0 - (timings_.solve_setup - setup);
   }
   {
     Stopwatch w(timings_.rest);
-    correct(dt);
-    if (has_solids() && follow_enclosing_solids(particles_, nb_, config_.pocket_solid_fraction,
-                                                config_.density, dt, block_share()) > 0)
-      exchange(particles_.v);  // the blended rows (the count is over all processes)
-    shift(dt);
+    {
+      Stopwatch s(stage[kStageCorrection]);
+      correct(dt);
+      if (has_solids() && follow_enclosing_solids(particles_, nb_, config_.pocket_solid_fraction,
+                                                  config_.density, dt, block_share()) > 0)
+        exchange(particles_.v);  // the blended rows (the count is over all processes)
+    }
+    {
+      Stopwatch s(stage[kStageShifting]);
+      shift(dt);
+    }
+    Stopwatch s(stage[kStageAdvection]);
     advect(dt, stats);
   }
+  Stopwatch w(stage[kStageOther]);
   if (decomposition_) {
     grad_p_.resize(last_);
 #pragma omp parallel for schedule(static)
@@ -233,6 +263,13 @@ StepStats IsphSolver<Dim>::step(double dt) {
   check_state("after the step");
   check_cfl(dt, stats);
   return stats;
+}
+
+const char* step_stage_name(int stage) {
+  static const char* const names[kStageCount] = {
+      "neighbours",  "free_surface",     "operators",  "predictor", "pressure_rhs", "assembly",
+      "solve_setup", "solve_iterations", "correction", "shifting",  "advection",    "other"};
+  return stage >= 0 && stage < kStageCount ? names[stage] : "";
 }
 
 template <int Dim>

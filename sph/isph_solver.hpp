@@ -130,11 +130,31 @@ class SimulationError : public std::runtime_error {
   std::string cause_;
 };
 
+// The stages of a step, in the order they run: the finer split of StepTimings (bench/fluid).
+enum StepStage : int {
+  kStageNeighbors,   // sort by cell, neighbour lists with r_ij, W, grad W
+  kStageSurface,     // free-surface detection
+  kStageOperators,   // corrected operator weights
+  kStagePredictor,   // wall ghosts, eddy viscosity, predictor, wall u*, full-support marks
+  kStageRhs,         // the PPE's right-hand side
+  kStageAssembly,    // the PPE's matrix
+  kStageSolveSetup,  // the preconditioner's setup (ILU factors, AMG hierarchy)
+  kStageSolveIterations,
+  kStageCorrection,  // pressure gradient, PMS loads, pocket blend
+  kStageShifting,
+  kStageAdvection,  // close pairs, positions
+  kStageOther,      // surface remesh, forcing-zone kinds, the halo, state checks
+  kStageCount
+};
+const char* step_stage_name(int stage);  // "neighbours", "free_surface", ...
+
 struct StepTimings {
   double neighbors = 0, operators = 0, assembly = 0, solve = 0, rest = 0;
   double solve_setup = 0;  // the preconditioner setup inside `solve` (not a part of its own)
   // Exchanging rows between processes (sph/row_share.hpp), inside the stages' times above.
   double exchange = 0;
+  // The same seconds by StepStage (plus what the coarse parts above leave out: kStageOther).
+  double stage[kStageCount] = {};
   double total() const { return neighbors + operators + assembly + solve + rest; }
 };
 

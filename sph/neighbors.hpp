@@ -46,6 +46,14 @@ class NeighborSearch {
   void make_grid(const Particles<Dim>& particles);
   int cell_of(const Vec<Dim>& x) const;
 
+  // The pairs each thread found in build(), kept between steps for their capacity.
+  struct Candidate {
+    int j;
+    Vec<Dim> d;
+    double r2;
+  };
+  std::vector<std::vector<Candidate>> found_;
+
   Domain<Dim> domain_;
   double cutoff_;
   Vec<Dim> origin_;

@@ -54,6 +54,21 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The fluid's stages and the coupled step's own parts (RunResult::stage_seconds).
+std::vector<std::pair<std::string, double>> coupled_stage_seconds(const CoupledTimings& c,
+                                                                  const isph::StepTimings& f) {
+  auto s = fluid_stage_seconds(f);
+  s.emplace_back("coupling", c.coupling);
+  s.emplace_back(c.staggered ? "dem_wait" : "dem", c.staggered ? c.dem_wait : c.dem);
+  return s;
+}
+
+// The staggered DEM's own seconds, on its thread beside the others.
+std::vector<std::pair<std::string, double>> dem_beside(const CoupledTimings& c) {
+  if (!c.staggered) return {};
+  return {{"dem_beside", c.dem}};
+}
+
 const char* kUsage =
     "usage: isphdem run CASE.toml --out DIR [--set key=value ...] [--quiet] [--resume]\n"
     "  --out DIR        output directory (snap_<step>.h5, *.xdmf, diagnostics.csv, result.json);\n"
@@ -349,6 +364,8 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     progress.finish();
     backend.finalize();
     report.cost(solver.time(), solver.steps(), particles, omp_get_wtime() - start, ppe_total);
+    report.stages(coupled_stage_seconds(run.timings(), solver.timings()),
+                  dem_beside(run.timings()));
     report.parallel(solver.row_parts(), solver.rows_shared(), decomposed);
     report.interrupted(announce_interruption(e, args.file.string(), args.out.string(),
                                              args.overrides, ranks_of(MPI_COMM_WORLD), rank == 0));
@@ -356,6 +373,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   }
   backend.finalize();
   report.cost(solver.time(), solver.steps(), particles, omp_get_wtime() - start, ppe_total);
+  report.stages(coupled_stage_seconds(run.timings(), solver.timings()), dem_beside(run.timings()));
   report.parallel(solver.row_parts(), solver.rows_shared(), decomposed);
   if (!finished) {
     report.stopped(why, cause);
@@ -377,6 +395,7 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
       std::printf(
           "  time per part: DEM substeps %.0f%%, coupling (mapping, drag) %.0f%%, ISPH %.0f%%\n",
           100 * t.dem / t.total(), 100 * t.coupling / t.total(), 100 * t.fluid / t.total());
+    print_fluid_stages(solver.timings(), solver.steps());
     print_ppe_cost(solver);
   }
   return 0;

@@ -14,6 +14,23 @@ void print_ppe_cost(const isph::IsphSolver<Dim>& solver) {
                 1e3 * t.exchange / steps, 100 * t.exchange / t.total());
 }
 
+std::vector<std::pair<std::string, double>> fluid_stage_seconds(const isph::StepTimings& t) {
+  std::vector<std::pair<std::string, double>> s;
+  for (int k = 0; k < isph::kStageCount; ++k) s.emplace_back(isph::step_stage_name(k), t.stage[k]);
+  return s;
+}
+
+void print_fluid_stages(const isph::StepTimings& t, long steps) {
+  std::string line = "  fluid stages, ms/step:";
+  char buf[64];
+  for (int k = 0; k < isph::kStageCount; ++k) {
+    std::snprintf(buf, sizeof buf, "%s %s %.3g", k ? "," : "", isph::step_stage_name(k),
+                  1e3 * t.stage[k] / double(std::max(1L, steps)));
+    line += buf;
+  }
+  std::printf("%s\n", line.c_str());
+}
+
 template void print_ppe_cost<2>(const isph::IsphSolver<2>&);
 template void print_ppe_cost<3>(const isph::IsphSolver<3>&);
 

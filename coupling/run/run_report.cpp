@@ -1,7 +1,9 @@
 #include "run/run_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "study/diagnostics_table.hpp"
 
@@ -28,6 +30,15 @@ void RunReport::cost(double time, long steps, long particles, double wall, long 
   result_.wall_seconds = wall;
   result_.particle_steps_per_second = wall > 0 ? double(particles) * double(steps) / wall : NAN;
   result_.ppe_iterations_per_step = steps > 0 ? double(ppe) / double(steps) : 0.0;
+}
+
+void RunReport::stages(std::vector<std::pair<std::string, double>> parts,
+                       const std::vector<std::pair<std::string, double>>& beside) {
+  double sum = 0.0;
+  for (const auto& s : parts) sum += s.second;
+  parts.emplace_back("output", std::max(0.0, result_.wall_seconds - sum));
+  parts.insert(parts.end(), beside.begin(), beside.end());
+  result_.stage_seconds = std::move(parts);
 }
 
 void RunReport::parallel(int ranks, bool rows_shared, bool decomposed) {

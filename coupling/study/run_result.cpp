@@ -52,6 +52,8 @@ void write_run_result(const std::filesystem::path& file, const RunResult& r) {
                        {"expected", number(m.expected)},
                        {"error", number(m.error)},
                        {"error_kind", m.relative ? "relative" : "absolute"}});
+  json stages = json::object();
+  for (const auto& [name, seconds] : r.stage_seconds) stages[name] = number(seconds);
   const json j = {{"status", r.status},
                   {"message", r.message},
                   {"cause", r.cause},
@@ -67,6 +69,7 @@ void write_run_result(const std::filesystem::path& file, const RunResult& r) {
                   {"ranks", r.ranks},
                   {"rows_shared", r.rows_shared},
                   {"decomposed", r.decomposed},
+                  {"stage_seconds", stages},
                   {"metrics", metrics}};
   // A message with bytes that are not UTF-8 (a path, LIGGGHTS's words) must not lose the file.
   write_file_atomically(file, j.dump(2, ' ', false, json::error_handler_t::replace) + "\n");
@@ -107,6 +110,9 @@ std::optional<RunResult> read_run_result(const std::filesystem::path& file) {
       j.contains("rows_shared") && j["rows_shared"].is_boolean() && j["rows_shared"].get<bool>();
   r.decomposed =
       j.contains("decomposed") && j["decomposed"].is_boolean() && j["decomposed"].get<bool>();
+  if (j.contains("stage_seconds") && j["stage_seconds"].is_object())
+    for (const auto& [name, seconds] : j["stage_seconds"].items())
+      r.stage_seconds.emplace_back(name, seconds.is_number() ? seconds.get<double>() : NAN);
   if (j.contains("metrics") && j["metrics"].is_array())
     for (const auto& m : j["metrics"]) {
       if (!m.is_object() || text(m, "name").empty()) continue;

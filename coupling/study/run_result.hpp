@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "study/reference_metrics.hpp"
@@ -30,6 +31,10 @@ struct RunResult {
   int ranks = 1;             // MPI ranks of the run
   bool rows_shared = false;  // each rank computed its block of the fluid's rows (docs/parallel.md)
   bool decomposed = false;   // each rank held only its own part of the fluid (docs/parallel.md)
+  // Wall seconds by part of the step, on rank 0: the fluid's stages (isph::StepStage names), and
+  // for a coupled run "coupling", "dem" (sequential) or "dem_wait" and "dem_beside" (staggered),
+  // and "output" for what the step loop spent outside the steps (snapshots, diagnostics, start).
+  std::vector<std::pair<std::string, double>> stage_seconds;
   std::vector<MetricResult> metrics;
 };
 

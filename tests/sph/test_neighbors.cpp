@@ -1,6 +1,7 @@
 // Neighbour lists from the cell search equal a brute-force search, on random and on clustered
 // particle sets, with and without periodic axes; pair geometry is consistent.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <random>
@@ -70,6 +71,44 @@ TEST(Neighbors, ClusteredMatchesBruteForce2D) { compare_with_brute_force<2>(true
 TEST(Neighbors, PeriodicMatchesBruteForce2D) { compare_with_brute_force<2>(false, true); }
 TEST(Neighbors, RandomMatchesBruteForce3D) { compare_with_brute_force<3>(false, false); }
 TEST(Neighbors, ClusteredPeriodicMatchesBruteForce3D) { compare_with_brute_force<3>(true, true); }
+
+// A block of rows (a rank's share, sph/row_share.hpp), listed by 1 to 3 threads in the one pass
+// over the candidates: each of its rows is the whole list's row, in the same order, with the same
+// pair geometry; rows outside the block are empty.
+TEST(Neighbors, BlockOfRowsOnSeveralThreadsEqualsTheWholeListsRows) {
+  Domain<2> dom;
+  dom.lo.setZero();
+  dom.hi.setOnes();
+  dom.periodic[1] = true;
+  Particles<2> p = random_cloud<2>(3000, true, 11);
+  Kernel<2> W(KernelType::WendlandC2, 0.021);
+  NeighborSearch<2> search(dom, W.support());
+  search.sort(p);
+  Neighbors<2> whole;
+  search.build(p, W, whole);
+  const int n = static_cast<int>(p.size()), first = 700, last = 2300;
+  for (int threads = 1; threads <= 3; ++threads) {
+    omp_set_num_threads(threads);
+    Neighbors<2> block;
+    search.build(p, W, block, first, last);
+    ASSERT_EQ(block.size(), whole.size());
+    for (int i = 0; i < n; ++i) {
+      if (i < first || i >= last) {
+        ASSERT_EQ(block.end(i), block.begin(i)) << "row " << i << " outside the block";
+        continue;
+      }
+      ASSERT_EQ(block.end(i) - block.begin(i), whole.end(i) - whole.begin(i)) << "row " << i;
+      for (int k = 0; k < whole.end(i) - whole.begin(i); ++k) {
+        const int a = block.begin(i) + k, b = whole.begin(i) + k;
+        ASSERT_EQ(block.index[a], whole.index[b]);
+        ASSERT_EQ(block.rij[a], whole.rij[b]);
+        ASSERT_EQ(block.w[a], whole.w[b]);
+        ASSERT_EQ(block.dw[a], whole.dw[b]);
+      }
+    }
+    EXPECT_GT(block.pairs(), static_cast<std::size_t>(last - first));
+  }
+}
 
 TEST(Neighbors, SortKeepsEveryParticle) {
   Particles<2> p = random_cloud<2>(500, true, 3);
