@@ -124,6 +124,9 @@ int run_fluid_case(const CaseFile& c, const RunArguments& args, RunReport& repor
   };
 
   const double start = omp_get_wtime() - position.wall_seconds;
+  // This process's share of a resumed run: what the stage timings cover.
+  const double process_start = omp_get_wtime();
+  const long steps_before = solver.steps();
   ProgressLine progress(settings.t_end, talk);
   if (!args.resume) snapshot();
   long ppe_total = position.ppe_total;
@@ -156,14 +159,14 @@ int run_fluid_case(const CaseFile& c, const RunArguments& args, RunReport& repor
   } catch (const Interrupted& e) {
     progress.finish();
     report.cost(solver.time(), solver.steps(), particles, omp_get_wtime() - start, ppe_total);
-    report.stages(fluid_stage_seconds(solver.timings()));
+    report.stages(omp_get_wtime() - process_start, fluid_stage_seconds(solver.timings()));
     report.parallel(solver.row_parts(), solver.rows_shared(), decomposed);
     report.interrupted(announce_interruption(e, args.file.string(), args.out.string(),
                                              args.overrides, ranks, rank == 0));
     return e.exit_status();
   }
   report.cost(solver.time(), solver.steps(), particles, omp_get_wtime() - start, ppe_total);
-  report.stages(fluid_stage_seconds(solver.timings()));
+  report.stages(omp_get_wtime() - process_start, fluid_stage_seconds(solver.timings()));
   report.parallel(solver.row_parts(), solver.rows_shared(), decomposed);
   if (!finished) {
     report.stopped(why, cause);
@@ -183,8 +186,8 @@ int run_fluid_case(const CaseFile& c, const RunArguments& args, RunReport& repor
         "rest %.0f%%\n",
         100 * t.neighbors / t.total(), 100 * t.operators / t.total(), 100 * t.assembly / t.total(),
         100 * t.solve / t.total(), 100 * t.rest / t.total());
-    print_fluid_stages(t, steps);
-    print_ppe_cost(solver);
+    print_fluid_stages(t, steps - steps_before);
+    print_ppe_cost(solver, solver.steps() - steps_before);
   }
   return 0;
 }

@@ -273,6 +273,9 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     write_collectively(rank, [&] { writer.write(s); });
   };
   const double start = omp_get_wtime() - position.wall_seconds;
+  // This process's share of a resumed run: what the stage timings cover.
+  const double process_start = omp_get_wtime();
+  const long steps_before = solver.steps();
   ProgressLine progress(settings.t_end, talk);
   if (!args.resume) snapshot();
   long ppe_total = position.ppe_total;
@@ -364,7 +367,8 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
     progress.finish();
     backend.finalize();
     report.cost(solver.time(), solver.steps(), particles, omp_get_wtime() - start, ppe_total);
-    report.stages(coupled_stage_seconds(run.timings(), solver.timings()),
+    report.stages(omp_get_wtime() - process_start,
+                  coupled_stage_seconds(run.timings(), solver.timings()),
                   dem_beside(run.timings()));
     report.parallel(solver.row_parts(), solver.rows_shared(), decomposed);
     report.interrupted(announce_interruption(e, args.file.string(), args.out.string(),
@@ -373,7 +377,8 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
   }
   backend.finalize();
   report.cost(solver.time(), solver.steps(), particles, omp_get_wtime() - start, ppe_total);
-  report.stages(coupled_stage_seconds(run.timings(), solver.timings()), dem_beside(run.timings()));
+  report.stages(omp_get_wtime() - process_start,
+                coupled_stage_seconds(run.timings(), solver.timings()), dem_beside(run.timings()));
   report.parallel(solver.row_parts(), solver.rows_shared(), decomposed);
   if (!finished) {
     report.stopped(why, cause);
@@ -395,8 +400,8 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
       std::printf(
           "  time per part: DEM substeps %.0f%%, coupling (mapping, drag) %.0f%%, ISPH %.0f%%\n",
           100 * t.dem / t.total(), 100 * t.coupling / t.total(), 100 * t.fluid / t.total());
-    print_fluid_stages(solver.timings(), solver.steps());
-    print_ppe_cost(solver);
+    print_fluid_stages(solver.timings(), solver.steps() - steps_before);
+    print_ppe_cost(solver, solver.steps() - steps_before);
   }
   return 0;
 }

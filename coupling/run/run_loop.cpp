@@ -3,9 +3,9 @@
 namespace isphdem {
 
 template <int Dim>
-void print_ppe_cost(const isph::IsphSolver<Dim>& solver) {
+void print_ppe_cost(const isph::IsphSolver<Dim>& solver, long steps_taken) {
   const auto& t = solver.timings();
-  const double steps = std::max(1L, solver.steps());
+  const double steps = std::max(1L, steps_taken);
   std::printf("  pressure solve (%s): setup %.3g ms/step, iterations %.3g ms/step\n",
               solver.config().pressure_solver.preconditioner.c_str(), 1e3 * t.solve_setup / steps,
               1e3 * (t.solve - t.solve_setup) / steps);
@@ -31,7 +31,7 @@ void print_fluid_stages(const isph::StepTimings& t, long steps) {
   std::printf("%s\n", line.c_str());
 }
 
-template void print_ppe_cost<2>(const isph::IsphSolver<2>&);
-template void print_ppe_cost<3>(const isph::IsphSolver<3>&);
+template void print_ppe_cost<2>(const isph::IsphSolver<2>&, long);
+template void print_ppe_cost<3>(const isph::IsphSolver<3>&, long);
 
 }  // namespace isphdem

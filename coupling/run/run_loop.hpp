@@ -60,10 +60,11 @@ bool run_to_end(Run& run, const RunSettings& settings, double end_tolerance,
 // The pressure solve per step, setup (AMG hierarchy, factorisation) apart from the iterations:
 // the two numbers a user changing solver.preconditioner or solver.petsc.setup_reuse compares.
 template <int Dim>
-void print_ppe_cost(const isph::IsphSolver<Dim>& solver);
+void print_ppe_cost(const isph::IsphSolver<Dim>& solver, long steps);
 
 // The fluid's seconds by stage (isph::StepStage names, in step order) for result.json, and the
-// same per step on one line of the done report (bench/fluid/run_profile.sh reads the former).
+// same per step (over the `steps` this process took) on one line of the done report
+// (bench/fluid/run_profile.sh reads the former).
 std::vector<std::pair<std::string, double>> fluid_stage_seconds(const isph::StepTimings& t);
 void print_fluid_stages(const isph::StepTimings& t, long steps);
 

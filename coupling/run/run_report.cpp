@@ -32,11 +32,11 @@ void RunReport::cost(double time, long steps, long particles, double wall, long 
   result_.ppe_iterations_per_step = steps > 0 ? double(ppe) / double(steps) : 0.0;
 }
 
-void RunReport::stages(std::vector<std::pair<std::string, double>> parts,
+void RunReport::stages(double wall, std::vector<std::pair<std::string, double>> parts,
                        const std::vector<std::pair<std::string, double>>& beside) {
   double sum = 0.0;
   for (const auto& s : parts) sum += s.second;
-  parts.emplace_back("output", std::max(0.0, result_.wall_seconds - sum));
+  parts.emplace_back("output", std::max(0.0, wall - sum));
   parts.insert(parts.end(), beside.begin(), beside.end());
   result_.stage_seconds = std::move(parts);
 }

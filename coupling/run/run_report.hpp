@@ -20,10 +20,11 @@ class RunReport {
   // CaseError before the first step when a metric reads a column this run does not write.
   void check_columns(const std::vector<std::string>& columns) const;
   void cost(double time, long steps, long particles, double wall_seconds, long ppe_iterations);
-  // Seconds by part of the step (RunResult::stage_seconds); "output" is added as the wall
-  // seconds of cost() less their sum, so call this after cost(). `beside`: seconds spent on
-  // another thread at the same time (the staggered DEM), listed but not part of the wall time.
-  void stages(std::vector<std::pair<std::string, double>> parts,
+  // Seconds by part of the step (RunResult::stage_seconds) in this process (a resumed run's
+  // share), whose wall time `wall` is; "output" is added as `wall` less their sum. `beside`:
+  // seconds spent on another thread at the same time (the staggered DEM), listed but not part
+  // of the wall time.
+  void stages(double wall, std::vector<std::pair<std::string, double>> parts,
               const std::vector<std::pair<std::string, double>>& beside = {});
   // The ranks the run's fluid was on, and whether its rows were shared between them.
   void parallel(int ranks, bool rows_shared, bool decomposed);

@@ -23,7 +23,7 @@ int check_stage_seconds(const std::filesystem::path& out, const std::string& ext
       "parts=sum(s[k] for k in need); print('stage_seconds', s, 'wall', r['wall_seconds']); "
       "ok=not missing and min(s.values())>=0 and s['neighbours']>0 and s['solve_iterations']>0 "
       "and all(s[k]>0 for k in [k for k in sys.argv[2].split(',') if k]) "
-      "and abs(parts-r['wall_seconds'])<=1e-6*r['wall_seconds']+1e-9 and s['output']>0; "
+      "and abs(parts-r['wall_seconds'])<=1e-3*r['wall_seconds'] and s['output']>0; "
       "print('missing', missing); sys.exit(0 if ok else 1)";
   return std::system(("/usr/bin/python3 -c \"" + script + "\" " + (out / "result.json").string() +
                       " " + extra + ",")
