@@ -65,7 +65,10 @@ void compute_operators(const Neighbors<Dim>& nb, double h, double volume,
         M.noalias() += nb.w[k] * P * P.transpose();
       }
       Eigen::LLT<MatT> llt(M);
-      const MatT Minv = llt.solve(MatT::Identity());
+      // Column by column: with the identity as one right-hand side Eigen took its general
+      // blocked matrix path (packing, a GEMM kernel), which cost as much as the fit itself.
+      MatT Minv;
+      for (int c = 0; c < T; ++c) Minv.col(c) = llt.solve(VecT::Unit(c));
       // Exact 1-norm reciprocal condition number (the inverse is needed anyway).
       const double rcond = 1.0 / (M.cwiseAbs().colwise().sum().maxCoeff() *
                                   Minv.cwiseAbs().colwise().sum().maxCoeff());
