@@ -1,8 +1,20 @@
 #include "ilu0_preconditioner.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace isph {
+
+void Ilu0Preconditioner::copy_compressed(Eigen::Index rows, Eigen::Index cols,
+                                         Eigen::Index nonzeros, const StorageIndex* outer,
+                                         const StorageIndex* inner, const double* values) {
+  Matrix A(rows, cols);
+  A.resizeNonZeros(nonzeros);
+  std::copy(outer, outer + rows + 1, A.outerIndexPtr());
+  std::copy(inner, inner + nonzeros, A.innerIndexPtr());
+  std::copy(values, values + nonzeros, A.valuePtr());
+  factor(std::move(A));
+}
 
 void Ilu0Preconditioner::factor(Matrix A) {
   A.makeCompressed();
