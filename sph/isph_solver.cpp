@@ -48,8 +48,12 @@ IsphSolver<Dim>::IsphSolver(const IsphConfig<Dim>& config, const Domain<Dim>& do
 
 template <int Dim>
 void IsphSolver<Dim>::remesh_surface() {
-  surface_top_ = remesh_surface_rows(particles_, kernel_, Vec<Dim>(-config_.gravity.normalized()),
-                                     surface_columns_, config_.surface_remesh_rows);
+  const Vec<Dim> up = -config_.gravity.normalized();
+  surface_top_ = decomposition_
+                     ? remesh_surface_rows_shared(particles_, kernel_, up, surface_columns_,
+                                                  config_.surface_remesh_rows, *decomposition_)
+                     : remesh_surface_rows(particles_, kernel_, up, surface_columns_,
+                                           config_.surface_remesh_rows);
 }
 
 template <int Dim>
@@ -65,13 +69,12 @@ void IsphSolver<Dim>::check_inside(const Particles<Dim>& particles, const Domain
 
 template <int Dim>
 void IsphSolver<Dim>::decompose(std::shared_ptr<Decomposition<Dim>> d, bool split) {
-  // The remesh takes the highest particles of the whole surface (not yet gathered over
-  // processes).
-  if (!surface_columns_.empty())
-    throw SimulationError(
-        "solver.surface_remesh_rows remeshes the whole surface on one process and does not run "
-        "decomposed yet: run the case without mpirun (threads: OMP_NUM_THREADS), or set "
-        "solver.surface_remesh_rows = 0");
+  // A split scene's share holds only part of the surface: its lattice and top from all of them.
+  if (remeshes() && split) {
+    const Vec<Dim> up = -config_.gravity.normalized();
+    surface_columns_ = surface_columns_shared(particles_, up, *d);
+    surface_top_ = d->max(highest_fluid(particles_, up));
+  }
   try {
     linear_solver_->number_globally(nullptr);
     unit_solver_->number_globally(nullptr);
@@ -190,8 +193,7 @@ StepStats IsphSolver<Dim>::step(double dt) {
     if (!redistributed_) redistribute();
     redistributed_ = false;
     update_forcing_kinds();
-    if (!surface_columns_.empty() && steps_ > 0 && steps_ % config_.surface_remesh_every == 0)
-      remesh_surface();
+    if (remeshes() && steps_ > 0 && steps_ % config_.surface_remesh_every == 0) remesh_surface();
   }
   {
     Stopwatch w(stage[kStageNeighbors]);

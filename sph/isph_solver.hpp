@@ -313,7 +313,8 @@ class IsphSolver {
   std::vector<Vec<Dim>> u_star_, wall_ghost_, shift_;
   std::vector<Vec<Dim>> pms_u_star_;       // PMS rows: the plain predictor's u*, for their force
   std::vector<Vec<Dim>> surface_columns_;  // the lattice surface_remesh_rows remeshes onto
-  double surface_top_ = 0.0;               // height of the remeshed top row along -gravity
+  bool remeshes() const { return config_.surface_remesh_rows > 0; }
+  double surface_top_ = 0.0;  // height of the remeshed top row along -gravity
   std::vector<uint8_t> operator_mode_, full_support_, shift_mode_, dry_wall_;
   Eigen::VectorXd pressure_;
   Eigen::VectorXd unit_response_;      // q of spread_pinned_source, reused for a few steps

@@ -28,7 +28,7 @@ void IsphSolver<Dim>::detect_free_surface() {
       exchange(dry_wall_);  // the scan ignores dry neighbours
       mark_open_side_as_surface(particles_, nb_, &dry_wall_, gravity ? &up : nullptr);
     }
-    if (!surface_columns_.empty()) confine_surface_to_remeshed_rows();
+    if (remeshes()) confine_surface_to_remeshed_rows();
   } else
     std::fill(particles_.surface.begin(), particles_.surface.end(), 0);
   if (config_.free_surface && has_solids())

@@ -45,7 +45,7 @@ void IsphSolver<Dim>::compute_operator_weights() {
   // Rows next to the surface that would amplify their own divergence are surface rows (see
   // projection_stability.hpp): a surface test that needs the operators, so it runs here and not in
   // detect_free_surface. Under a surface remesh the remeshed rows are the surface.
-  if (config_.free_surface && config_.surface.unstable_rows && surface_columns_.empty()) {
+  if (config_.free_surface && config_.surface.unstable_rows && !remeshes()) {
     double marked =
         mark_unstable_projection_rows(particles_, nb_, op_, first_, last_, kMinProjectionRatio);
     exchange(particles_.surface);

@@ -38,7 +38,7 @@ void IsphSolver<Dim>::compute_pressure_rhs(double dt) {
   auto& P = particles_;
   const double rho0 = config_.density;
   rhs_.assign(n, 0.0);
-  const bool remesh_band = !surface_columns_.empty() && config_.surface_remesh_alpha_s > 0.0;
+  const bool remesh_band = remeshes() && config_.surface_remesh_alpha_s > 0.0;
   const double band_depth = config_.surface_remesh_rows + 4;
   const Vec<Dim> up = remesh_band ? Vec<Dim>(-config_.gravity.normalized()) : Vec<Dim>::Zero();
   const bool solids = remesh_band && has_solids();

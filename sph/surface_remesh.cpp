@@ -1,6 +1,8 @@
 #include "surface_remesh.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <functional>
 #include <limits>
 #include <numeric>
 
@@ -96,6 +98,92 @@ double remesh_surface_rows(Particles<Dim>& particles, const Kernel<Dim>& kernel,
   return top;
 }
 
+namespace {
+
+// What the remesh reads and writes of a fluid particle, gathered over processes.
+template <int Dim>
+struct FluidRecord {
+  int64_t id;
+  Vec<Dim> x, v;
+  double p, porosity;
+};
+
+}  // namespace
+
+template <int Dim>
+std::vector<Vec<Dim>> surface_columns_shared(const Particles<Dim>& particles, const Vec<Dim>& up,
+                                             const RowShare& share) {
+  const auto& P = particles;
+  const double top = share.max(highest_fluid(P, up));
+  std::vector<Vec<Dim>> mine;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.kind[i] == kFluid && up.dot(P.x[i]) > top - 0.5 * P.spacing)
+      mine.push_back(P.x[i] - up.dot(P.x[i]) * up);
+  return share.concatenate(mine);
+}
+
+template <int Dim>
+double remesh_surface_rows_shared(Particles<Dim>& particles, const Kernel<Dim>& kernel,
+                                  const Vec<Dim>& up, const std::vector<Vec<Dim>>& columns,
+                                  int rows, const RowShare& share) {
+  auto& P = particles;
+  const double dx = P.spacing;
+  const double top = share.max(highest_fluid(P, up));
+  double fluid_here = 0.0;
+  for (std::size_t i = 0; i < P.size(); ++i) fluid_here += P.kind[i] == kFluid;
+  const double fluid_total = share.sum(fluid_here);
+  const std::size_t m = std::min<std::size_t>(static_cast<std::size_t>(fluid_total),
+                                              columns.size() * static_cast<std::size_t>(rows));
+  // Gather the fluid above `floor`, deeper until it holds the m highest particles and every
+  // particle the remeshed rows interpolate from (those above the new rows' reach).
+  double depth = (rows + 4) * dx + 2.0 * kernel.support();
+  std::vector<FluidRecord<Dim>> all;
+  double floor = top;
+  for (;;) {
+    floor = top - depth;
+    std::vector<FluidRecord<Dim>> mine;
+    for (std::size_t i = 0; i < P.size(); ++i)
+      if (P.kind[i] == kFluid && up.dot(P.x[i]) > floor)
+        mine.push_back({P.id[i], P.x[i], P.v[i], P.p[i], P.porosity[i]});
+    all = share.concatenate(mine);
+    if (all.size() >= static_cast<std::size_t>(fluid_total)) break;  // every fluid particle
+    if (all.size() >= m) {
+      std::vector<double> h(all.size());
+      for (std::size_t k = 0; k < all.size(); ++k) h[k] = up.dot(all[k].x);
+      std::nth_element(h.begin(), h.begin() + (m - 1), h.end(), std::greater<double>());
+      double mean = 0.0;
+      for (std::size_t k = 0; k < m; ++k) mean += h[k];
+      mean /= static_cast<double>(m);
+      const double reach = mean + 0.5 * (rows - 1) * dx - rows * dx - kernel.support();
+      if (reach > floor) break;
+    }
+    depth *= 2.0;
+  }
+  // Every process the same particles in the same order, whatever the decomposition.
+  std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
+  Particles<Dim> gathered;
+  gathered.spacing = dx;
+  for (const auto& r : all) {
+    gathered.x.push_back(r.x);
+    gathered.v.push_back(r.v);
+    gathered.p.push_back(r.p);
+    gathered.porosity.push_back(r.porosity);
+    gathered.kind.push_back(kFluid);
+    gathered.id.push_back(r.id);
+  }
+  const double new_top = remesh_surface_rows(gathered, kernel, up, columns, rows);
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != kFluid || !(up.dot(P.x[i]) > floor)) continue;
+    const auto it = std::lower_bound(gathered.id.begin(), gathered.id.end(), P.id[i]);
+    const std::size_t k = static_cast<std::size_t>(it - gathered.id.begin());
+    P.x[i] = gathered.x[k];
+    P.v[i] = gathered.v[k];
+    P.p[i] = gathered.p[k];
+    P.porosity[i] = gathered.porosity[k];
+  }
+  return new_top;
+}
+
 template double highest_fluid<2>(const Particles<2>&, const Vec<2>&);
 template double highest_fluid<3>(const Particles<3>&, const Vec<3>&);
 template std::vector<Vec<2>> surface_columns<2>(const Particles<2>&, const Vec<2>&);
@@ -104,5 +192,14 @@ template double remesh_surface_rows<2>(Particles<2>&, const Kernel<2>&, const Ve
                                        const std::vector<Vec<2>>&, int);
 template double remesh_surface_rows<3>(Particles<3>&, const Kernel<3>&, const Vec<3>&,
                                        const std::vector<Vec<3>>&, int);
+
+template double remesh_surface_rows_shared<2>(Particles<2>&, const Kernel<2>&, const Vec<2>&,
+                                              const std::vector<Vec<2>>&, int, const RowShare&);
+template double remesh_surface_rows_shared<3>(Particles<3>&, const Kernel<3>&, const Vec<3>&,
+                                              const std::vector<Vec<3>>&, int, const RowShare&);
+template std::vector<Vec<2>> surface_columns_shared<2>(const Particles<2>&, const Vec<2>&,
+                                                       const RowShare&);
+template std::vector<Vec<3>> surface_columns_shared<3>(const Particles<3>&, const Vec<3>&,
+                                                       const RowShare&);
 
 }  // namespace isph

@@ -13,6 +13,7 @@
 
 #include "kernel.hpp"
 #include "particles.hpp"
+#include "row_share.hpp"
 
 namespace isph {
 
@@ -32,5 +33,20 @@ std::vector<Vec<Dim>> surface_columns(const Particles<Dim>& particles, const Vec
 template <int Dim>
 double remesh_surface_rows(Particles<Dim>& particles, const Kernel<Dim>& kernel, const Vec<Dim>& up,
                            const std::vector<Vec<Dim>>& columns, int rows);
+
+// The same over processes that each hold a part of the fluid (collective): the fluid near the
+// top, deep enough for the rows and the fluid they interpolate from, is gathered from every
+// process in the order of the particles' ids, every process remeshes it alike, and each takes
+// the new values of its own particles. The result is one process's up to the order of the
+// interpolation's sums. `columns` are the whole surface's (surface_columns_shared).
+template <int Dim>
+double remesh_surface_rows_shared(Particles<Dim>& particles, const Kernel<Dim>& kernel,
+                                  const Vec<Dim>& up, const std::vector<Vec<Dim>>& columns,
+                                  int rows, const RowShare& share);
+
+// surface_columns and highest_fluid over all processes' particles (collective).
+template <int Dim>
+std::vector<Vec<Dim>> surface_columns_shared(const Particles<Dim>& particles, const Vec<Dim>& up,
+                                             const RowShare& share);
 
 }  // namespace isph
