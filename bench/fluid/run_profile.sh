@@ -3,10 +3,11 @@
 # step's stages as `isphdem run` times them, docs: bench/README.md) for
 #   - the seed's erosion tank (examples/internal_erosion_2d/case.toml, semi-resolved, 0.5 cm/s,
 #     at 2.5e-4 s with 250 DEM substeps): sequential exchange on 1 and 2 threads, the staggered
-#     exchange on 1 thread (the DEM on the second core);
-#   - Taylor-Green at 160k particles (spacing 0.0025, 25 steps at the viscous limit): 1 and 2
-#     threads, 2 ranks;
-#   - the 3D dam break at a/dx = 40 (spacing 0.0025, 0.004 s at the automatic step): 1 and 2
+#     exchange on 1 thread (the DEM on the second core),
+#     and decomposed on 2 ranks (amg: the free surface's remesh gathered over the ranks);
+#   - Taylor-Green at 160k particles (spacing 0.0025, 25 steps at the viscous limit): the case's
+#     Jacobi on 1 and 2 threads, amg on 1 thread and decomposed on 2 ranks;
+#   - the 3D dam break at a/dx = 40 (spacing 0.0025, 0.01 s at the automatic step): 1 and 2
 #     threads.
 # Writes profile.csv (one row per run, seconds per step by stage) and profile.md (the table)
 # next to this script. The erosion example is copied to WORKDIR first (its packing is made
@@ -45,7 +46,7 @@ run() {
       mpirun -np "$ranks" --oversubscribe "${cmd[@]}" >"$out.log" 2>&1
   else
     OMP_NUM_THREADS=$threads "${cmd[@]}" >"$out.log" 2>&1
-  fi
+  fi || { echo "$name failed:" >&2; tail -5 "$out.log" >&2; exit 1; }
   /usr/bin/python3 "$here/profile_table.py" --row "$name" "$threads" "$ranks" "$load" \
     "$out/result.json" >>"$csv.new"
 }
@@ -56,11 +57,14 @@ for c in $CASES; do
   tank)
     rm -rf "$work/erosion"
     cp -r "$root/examples/internal_erosion_2d" "$work/erosion"
+    echo "packing the seed's layer (about a minute)" >&2
+    (cd "$work/erosion" && "$isphdem" dem in.packing -log none -screen none >/dev/null)
     tank=("$work/erosion/case.toml" --set time.end="$TANK_END" --set time.dt=2.5e-4
       --set dem.substeps=250 --set 'coupling.model="semi-resolved"')
     run tank_sequential_1t 1 1 "${tank[@]}"
     run tank_sequential_2t 2 1 "${tank[@]}"
     run tank_staggered_1t 1 1 "${tank[@]}" --set 'dem.exchange="staggered"'
+    run tank_amg_2r 1 2 "${tank[@]}" --set 'solver.preconditioner="amg"'
     ;;
   tg)
     # dt = 0.125 dx^2 / nu (nu = 0.01), 25 steps
@@ -68,11 +72,12 @@ for c in $CASES; do
       --set time.dt=7.8125e-5 --set time.end=0.001953125)
     run tg160k_1t 1 1 "${tg[@]}"
     run tg160k_2t 2 1 "${tg[@]}"
-    run tg160k_2r 1 2 "${tg[@]}"
+    run tg160k_amg_1t 1 1 "${tg[@]}" --set 'solver.preconditioner="amg"'
+    run tg160k_amg_2r 1 2 "${tg[@]}" --set 'solver.preconditioner="amg"'
     ;;
   dam)
     dam=("$root/examples/dam_break_3d/case.toml" --set particles.spacing=0.0025
-      --set time.end=0.004)
+      --set time.end=0.01)
     run dam3d_1t 1 1 "${dam[@]}"
     run dam3d_2t 2 1 "${dam[@]}"
     ;;
