@@ -2,13 +2,11 @@
 // corrected operator weights that every later stage reuses.
 #include "isph_solver.hpp"
 #include "projection_stability.hpp"
-#include "stopwatch.hpp"
 
 namespace isph {
 
 template <int Dim>
 void IsphSolver<Dim>::find_neighbors() {
-  Stopwatch w(timings_.neighbors);
   const std::vector<int> perm = search_.sort(particles_);
   if (unit_response_.size() == static_cast<Eigen::Index>(perm.size())) {
     Eigen::VectorXd q(unit_response_.size());

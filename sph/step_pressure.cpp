@@ -101,7 +101,7 @@ void IsphSolver<Dim>::solve_pressure(StepStats& stats) {
   if (decomposition_) share_->exchange_rows(pressure_.data(), sizeof(double), n);
   stats.ppe_iterations = s.iterations;
   stats.ppe_residual = s.residual;
-  timings_.solve_setup += s.setup_seconds;
+  timings_.stage[kStageSolveSetup] += s.setup_seconds;
   unit_response_lambda_ = 0.0;
   if (config_.spread_pin && system_.pinned_id >= 0 && std::isfinite(s.residual)) {
     // q follows the particle arrangement slowly: solved again every few steps, in between the
@@ -114,7 +114,7 @@ void IsphSolver<Dim>::solve_pressure(StepStats& stats) {
       if (unit_response_.size() != n) unit_response_ = Eigen::VectorXd::Zero(n);
       const SolveStats u = unit_solver_->solve(system_.A, e, unit_response_);
       stats.ppe_iterations += u.iterations;
-      timings_.solve_setup += u.setup_seconds;
+      timings_.stage[kStageSolveSetup] += u.setup_seconds;
       fresh = std::isfinite(u.residual) && u.residual <= 1e3 * config_.pressure_solver.tolerance;
       unit_response_pin_ = system_.pinned_id;
       if (!fresh) unit_response_.resize(0);

@@ -16,15 +16,31 @@ double highest_fluid(const Particles<Dim>& particles, const Vec<Dim>& up) {
   return top;
 }
 
+namespace {
+
+// The tangential positions of the fluid particles within half a spacing of `top`.
 template <int Dim>
-std::vector<Vec<Dim>> surface_columns(const Particles<Dim>& particles, const Vec<Dim>& up) {
-  const auto& P = particles;
-  const double top = highest_fluid(P, up);
+std::vector<Vec<Dim>> columns_under(const Particles<Dim>& P, const Vec<Dim>& up, double top) {
   std::vector<Vec<Dim>> columns;
   for (std::size_t i = 0; i < P.size(); ++i)
     if (P.kind[i] == kFluid && up.dot(P.x[i]) > top - 0.5 * P.spacing)
       columns.push_back(P.x[i] - up.dot(P.x[i]) * up);
   return columns;
+}
+
+// What the remesh reads and writes of a fluid particle, gathered over processes.
+template <int Dim>
+struct FluidRecord {
+  int64_t id;
+  Vec<Dim> x, v;
+  double p, porosity;
+};
+
+}  // namespace
+
+template <int Dim>
+std::vector<Vec<Dim>> surface_columns(const Particles<Dim>& particles, const Vec<Dim>& up) {
+  return columns_under(particles, up, highest_fluid(particles, up));
 }
 
 template <int Dim>
@@ -98,28 +114,10 @@ double remesh_surface_rows(Particles<Dim>& particles, const Kernel<Dim>& kernel,
   return top;
 }
 
-namespace {
-
-// What the remesh reads and writes of a fluid particle, gathered over processes.
-template <int Dim>
-struct FluidRecord {
-  int64_t id;
-  Vec<Dim> x, v;
-  double p, porosity;
-};
-
-}  // namespace
-
 template <int Dim>
 std::vector<Vec<Dim>> surface_columns_shared(const Particles<Dim>& particles, const Vec<Dim>& up,
                                              const RowShare& share) {
-  const auto& P = particles;
-  const double top = share.max(highest_fluid(P, up));
-  std::vector<Vec<Dim>> mine;
-  for (std::size_t i = 0; i < P.size(); ++i)
-    if (P.kind[i] == kFluid && up.dot(P.x[i]) > top - 0.5 * P.spacing)
-      mine.push_back(P.x[i] - up.dot(P.x[i]) * up);
-  return share.concatenate(mine);
+  return share.concatenate(columns_under(particles, up, share.max(highest_fluid(particles, up))));
 }
 
 template <int Dim>

@@ -95,9 +95,9 @@ Timing run(int n, int s, int steps) {
       stage.move_particles(dem, solver);
       stage.before_fluid_step(dem, solver);
     }
-    const double t1 = omp_get_wtime(), solve0 = solver.timings().solve;
+    const double t1 = omp_get_wtime(), solve0 = solver.timings().solve();
     const auto st = solver.step(dt);
-    const double t2 = omp_get_wtime(), solve1 = solver.timings().solve;
+    const double t2 = omp_get_wtime(), solve1 = solver.timings().solve();
     DemLoads loads;
     if (n > 0) stage.after_fluid_step(dem, solver, dt, loads);
     const double t3 = omp_get_wtime();

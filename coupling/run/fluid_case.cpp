@@ -184,8 +184,8 @@ int run_fluid_case(const CaseFile& c, const RunArguments& args, RunReport& repor
     std::printf(
         "  time per part: neighbours %.0f%%, operators %.0f%%, assembly %.0f%%, solve %.0f%%, "
         "rest %.0f%%\n",
-        100 * t.neighbors / t.total(), 100 * t.operators / t.total(), 100 * t.assembly / t.total(),
-        100 * t.solve / t.total(), 100 * t.rest / t.total());
+        100 * t.neighbors() / t.total(), 100 * t.operators() / t.total(),
+        100 * t.assembly() / t.total(), 100 * t.solve() / t.total(), 100 * t.rest() / t.total());
     print_fluid_stages(t, steps - steps_before);
     print_ppe_cost(solver, solver.steps() - steps_before);
   }

@@ -7,8 +7,8 @@ void print_ppe_cost(const isph::IsphSolver<Dim>& solver, long steps_taken) {
   const auto& t = solver.timings();
   const double steps = std::max(1L, steps_taken);
   std::printf("  pressure solve (%s): setup %.3g ms/step, iterations %.3g ms/step\n",
-              solver.config().pressure_solver.preconditioner.c_str(), 1e3 * t.solve_setup / steps,
-              1e3 * (t.solve - t.solve_setup) / steps);
+              solver.config().pressure_solver.preconditioner.c_str(), 1e3 * t.solve_setup() / steps,
+              1e3 * (t.solve() - t.solve_setup()) / steps);
   if (solver.rows_shared())
     std::printf("  rows shared between the ranks: exchanges %.3g ms/step (%.1f%% of the fluid)\n",
                 1e3 * t.exchange / steps, 100 * t.exchange / t.total());
