@@ -2,9 +2,13 @@
 // Hydrodynamic loads on unresolved grains (docs/unresolved.md, DESIGN.md decision 3).
 //
 // Drag is distributed conservatively: the reaction f_a of fluid particle a (what the fluid loses
-// to the grains, f_a = -eps_a rho_f V_a F_r*,a, V_a the bulk particle volume) is split over the
-// grains in range with w_ak = V_k W_ak / sum_k' V_k' W_ak', the weights of the porosity map. The
-// w_ak of one fluid particle sum to one, so sum_k f_k = sum_a f_a exactly, up to round-off,
+// to the grains, f_a = -eps_a rho_f V_a F_r*,a, V_a the bulk particle volume, F_r* from the law
+// at the local Sauter mean diameter) is split over the grains in range by their surface,
+// w_ak = (V_k W_ak / d_k) / sum_k' (V_k' W_ak' / d_k'): the polydisperse correction of
+// Beetstra, van der Hoef & Kuipers (2007, with its erratum) in the form for a pressure-gradient
+// force on the grains, whose shares of the Sauter-mean drag add up to it exactly. Equal grains
+// get their volume shares V_k W_ak / sum V W, bit for bit. The w_ak of one fluid particle sum
+// to one, so sum_k f_k = sum_a f_a exactly, up to round-off,
 // whenever every particle with a reaction has a grain in range (the field's porosity is then
 // < 1); anything else is reported as `unassigned`, never silently dropped.
 #include <vector>
@@ -31,8 +35,9 @@ std::vector<isph::Vec<Dim>> resistance_reactions(const PorosityField<Dim>& field
                                                  const DragLaw& law, double fluid_density,
                                                  double bulk_volume);
 
-// Grain k gets depth * sum_a f_a w_ak. depth converts a 2D fluid's per-unit-depth reactions
-// into newtons on the grains of the quasi-2D slab: pass the slab thickness in 2D, 1 in 3D.
+// Grain k gets depth * sum_a f_a w_ak (w_ak by surface, above). depth converts a 2D fluid's
+// per-unit-depth reactions into newtons on the grains of the quasi-2D slab: pass the slab thickness
+// in 2D, 1 in 3D.
 template <int Dim>
 GrainLoads<Dim> distribute_reactions(const GrainWeights& weights,
                                      const std::vector<Grain<Dim>>& grains,

@@ -28,19 +28,21 @@ namespace {
 void check_porosity(double eps) {
   if (!(eps > 0.0 && eps <= 1.0)) throw std::domain_error("drag: porosity must be in (0, 1]");
 }
+void check_diameter(double d) {
+  if (!(d > 0.0)) throw std::domain_error("drag: grain diameter must be > 0");
+}
 }  // namespace
 
-double SeedResistance::a_star(double eps) const {
-  const double d = p_.grain_diameter;
+double SeedResistance::a_star(double eps, double d) const {
   return p_.alpha * p_.kinematic_viscosity * (1.0 - eps) * (1.0 - eps) / (eps * eps * eps * d * d);
 }
 
-double SeedResistance::b_star(double eps) const {
-  return p_.beta * (1.0 - eps) / (eps * eps * eps * p_.grain_diameter);
+double SeedResistance::b_star(double eps, double d) const {
+  return p_.beta * (1.0 - eps) / (eps * eps * eps * d);
 }
 
-double SeedResistance::reynolds(double eps, double speed) const {
-  return eps * eps * p_.grain_diameter * speed / p_.kinematic_viscosity;
+double SeedResistance::reynolds(double eps, double speed, double d) const {
+  return eps * eps * d * speed / p_.kinematic_viscosity;
 }
 
 double SeedResistance::c_star(double eps, double speed) const {
@@ -48,16 +50,17 @@ double SeedResistance::c_star(double eps, double speed) const {
          (std::pow(eps, p_.wen_yu_exponent) * p_.grain_diameter);
 }
 
-ResistanceCoefficients SeedResistance::ergun(double eps) const {
+ResistanceCoefficients SeedResistance::ergun(double eps, double d) const {
   check_porosity(eps);
-  return {a_star(eps) * eps, b_star(eps) * eps * eps};
+  check_diameter(d);
+  return {a_star(eps, d) * eps, b_star(eps, d) * eps * eps};
 }
 
-ResistanceCoefficients SeedResistance::wen_yu(double eps, double speed) const {
+ResistanceCoefficients SeedResistance::wen_yu(double eps, double speed, double d) const {
   check_porosity(eps);
-  const double d = p_.grain_diameter;
+  check_diameter(d);
   const double shape = 0.75 * (1.0 - eps) / (std::pow(eps, p_.wen_yu_exponent) * d);
-  const double re = reynolds(eps, speed);
+  const double re = reynolds(eps, speed, d);
   if (re > 1000.0) return {0.0, shape * 0.44};
   // c* |v_r| = shape * C_d |v_r|; C_d |v_r| = (24 nu / (eps^2 d)) (1 + 0.15 Re^0.687) stays finite
   // as |v_r| -> 0, so the Stokes part goes to A and only the correction to B.
@@ -72,14 +75,14 @@ double SeedResistance::wen_yu_weight(double eps) const {
   return std::min(1.0, std::max(0.0, s));
 }
 
-ResistanceCoefficients SeedResistance::coefficients(double eps, double speed) const {
+ResistanceCoefficients SeedResistance::coefficients(double eps, double speed, double d) const {
   check_porosity(eps);
   if (!(speed >= 0.0)) throw std::domain_error("drag: relative speed must be >= 0");
   const double w = wen_yu_weight(eps);
-  if (w <= 0.0) return ergun(eps);
-  if (w >= 1.0) return wen_yu(eps, speed);
-  const ResistanceCoefficients e = ergun(eps);
-  const ResistanceCoefficients y = wen_yu(eps, speed);
+  if (w <= 0.0) return ergun(eps, d);
+  if (w >= 1.0) return wen_yu(eps, speed, d);
+  const ResistanceCoefficients e = ergun(eps, d);
+  const ResistanceCoefficients y = wen_yu(eps, speed, d);
   return {(1.0 - w) * e.linear + w * y.linear, (1.0 - w) * e.quadratic + w * y.quadratic};
 }
 

@@ -102,6 +102,7 @@ PorosityField<Dim> PorosityMap<Dim>::compute(const std::vector<isph::Vec<Dim>>& 
   const std::size_t n = fluid_x.size();
   out.porosity.assign(n, 1.0);
   out.solid_velocity.assign(n, V::Zero());
+  out.diameter.assign(n, 0.0);
   out.weights.offset.assign(n + 1, 0);
   if (grains.empty()) return out;
 
@@ -118,6 +119,9 @@ PorosityField<Dim> PorosityMap<Dim>::compute(const std::vector<isph::Vec<Dim>>& 
       outside = outside || lo[d] > hi[d];
     }
     double solid = 0.0;
+    // Surface sum relative to the first grain in range: sum V W r_first / r_k equals the volume
+    // sum to the last bit when every grain has one size, so d_32 is then exactly that size.
+    double surface = 0.0, r_first = 0.0;
     V vsum = V::Zero();
     if (!outside) {
       Eigen::Matrix<std::int64_t, Dim, 1> c = lo;
@@ -131,7 +135,9 @@ PorosityField<Dim> PorosityMap<Dim>::compute(const std::vector<isph::Vec<Dim>>& 
           if (w <= 0.0) continue;
           out.weights.grain.push_back(k);
           out.weights.weight.push_back(w);
+          if (r_first == 0.0) r_first = grains[k].radius;
           solid += w;
+          surface += w * (r_first / grains[k].radius);
           vsum += w * grains[k].v;
         }
         int d = 0;
@@ -145,6 +151,7 @@ PorosityField<Dim> PorosityMap<Dim>::compute(const std::vector<isph::Vec<Dim>>& 
     out.weights.offset[a + 1] = out.weights.grain.size();
     if (solid > 0.0) {
       out.solid_velocity[a] = vsum / solid;
+      out.diameter[a] = 2.0 * r_first * (solid / surface);
       const double eps = 1.0 - solid / normalisation_;
       if (eps < settings_.min_porosity) ++out.floored;
       out.porosity[a] = std::max(eps, settings_.min_porosity);

@@ -50,6 +50,11 @@ struct PorosityField {
   std::vector<double> porosity;  // floored at min_porosity; exactly 1 where no grain is in range
   // Volume-weighted kernel average of the grain velocities; zero where no grain is in range.
   std::vector<isph::Vec<Dim>> solid_velocity;
+  // Local Sauter mean diameter d_32 = sum V_k W / sum (V_k W / d_k) of the grains in range: the
+  // diameter whose specific surface 6/d the local mixture has, the one Ergun's law takes for a
+  // graded bed (Beetstra, van der Hoef & Kuipers 2007). Zero where no grain is in range; exactly
+  // the grains' diameter where they all have one.
+  std::vector<double> diameter;
   GrainWeights weights;
   std::size_t floored = 0;  // points whose porosity the floor raised (a diagnostic)
 };

@@ -30,11 +30,10 @@ std::unique_ptr<UnresolvedCoupling<Dim>> make_unresolved_coupling(const CaseFile
   if (drag != "seed")
     throw CaseError("'unresolved.drag' must be \"seed\" (Ergun / Wen-Yu; got \"" + drag + "\")");
   SeedResistanceParameters p;
-  if (!c.has("unresolved.grain_diameter"))
-    throw CaseError(
-        "'unresolved.grain_diameter' is required: the fine grains' diameter d_s [m] "
-        "used by the drag law");
-  p.grain_diameter = c.positive("unresolved.grain_diameter");
+  // Optional: the drag takes each grain's size from LIGGGHTS; given, it is a check that every
+  // unresolved grain has this diameter (UnresolvedCoupling::initialize names those that differ).
+  if (c.has("unresolved.grain_diameter"))
+    s.grain_diameter = p.grain_diameter = c.positive("unresolved.grain_diameter");
   // The fluid's key, named as such: the drag law divides by it (the fluid alone takes 0).
   if (!(viscosity > 0.0))
     throw CaseError("'fluid.viscosity' (" + c.where("fluid.viscosity") +

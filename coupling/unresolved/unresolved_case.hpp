@@ -1,7 +1,8 @@
 // The `[unresolved]` table of a coupled case (docs/unresolved.md):
 //
 //   [unresolved]
-//   grain_diameter = 1e-3             # d_s of the drag law [m]
+//   grain_diameter = 1e-3             # optional check [m]: every unresolved grain has this
+//                                     # diameter (the drag takes each grain's own size)
 //   slab_thickness = 1e-3             # quasi-2D: DEM slab thickness T [m] (required in 2D)
 //   porosity_smoothing_length = 1.3e-3  # h_p [m], default the fluid's h
 //   min_porosity = 0.25

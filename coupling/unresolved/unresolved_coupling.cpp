@@ -1,5 +1,6 @@
 #include "unresolved/unresolved_coupling.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -34,6 +35,7 @@ void UnresolvedCoupling<Dim>::initialize(const DemState& dem, isph::IsphSolver<D
           " m, farther than the periodic box is long on axis " + std::to_string(k) + " (" +
           isph::format_number(d.hi[k] - d.lo[k]) +
           " m): lower unresolved.porosity_smoothing_length or make the box longer");
+  check_grain_diameter(dem);
   for (const auto& a : dem.atoms) {
     if (!maps(a)) continue;
     for (int k = 0; k < Dim; ++k)
@@ -43,6 +45,31 @@ void UnresolvedCoupling<Dim>::initialize(const DemState& dem, isph::IsphSolver<D
             " lies outside the fluid domain (axis " + std::to_string(k) +
             "): place the grains inside domain.min/domain.max (in 2D the fluid plane is x-y)");
   }
+}
+
+template <int Dim>
+void UnresolvedCoupling<Dim>::check_grain_diameter(const DemState& dem) const {
+  const double d = settings_.grain_diameter;
+  if (!(d > 0.0)) return;
+  std::size_t grains = 0, differ = 0;
+  std::string named;
+  for (const auto& a : dem.atoms) {
+    if (!maps(a)) continue;
+    ++grains;
+    // LIGGGHTS keeps radii in double precision: a parsed 0.0005 doubles to exactly 0.001.
+    if (std::abs(2.0 * a.radius - d) <= 1e-9 * d) continue;
+    if (++differ <= 3)
+      named += (differ > 1 ? ", " : "") + std::string("grain ") + std::to_string(a.tag) + ": " +
+               isph::format_number(2.0 * a.radius) + " m";
+  }
+  if (differ == 0) return;
+  throw std::runtime_error(
+      "unresolved.grain_diameter = " + isph::format_number(d) + " m, but " +
+      std::to_string(differ) + " of the " + std::to_string(grains) + " unresolved grains " +
+      (differ == 1 ? "has" : "have") + " another diameter (" + named + (differ > 3 ? ", ..." : "") +
+      "): the drag takes each grain's own size from LIGGGHTS, so remove "
+      "unresolved.grain_diameter from the case, or give the grains that diameter in the "
+      "LIGGGHTS script");
 }
 
 template <int Dim>
@@ -99,7 +126,7 @@ void UnresolvedCoupling<Dim>::before_fluid_step(const DemState& dem,
     P.porosity[i] = eps;
     P.solid_velocity[i] = eps < 1.0 ? field_.solid_velocity[r] : isph::Vec<Dim>::Zero();
     const double vr = (P.v[i] / eps - P.solid_velocity[i]).norm();
-    P.resistance[i] = eps < 1.0 ? law_->coefficients(eps, vr).total(vr) : 0.0;
+    P.resistance[i] = eps < 1.0 ? law_->coefficients(eps, vr, field_.diameter[r]).total(vr) : 0.0;
   }
 }
 

@@ -23,6 +23,9 @@ struct UnresolvedSettings {
   // go to the member atoms, which fix multisphere sums into the body). Otherwise only free
   // spheres are, and clumps are left to the resolved (PMS) stage.
   bool clump_spheres = false;
+  // unresolved.grain_diameter when the case gives it: initialize() stops if an unresolved grain
+  // has another diameter. 0: no check (the drag always takes each grain's own size).
+  double grain_diameter = 0.0;
 };
 
 template <int Dim>
@@ -54,6 +57,9 @@ class UnresolvedCoupling final : public CouplingStage<Dim> {
   const std::vector<Grain<Dim>>& grains() const { return grains_; }
 
  private:
+  // Throws naming the grains whose diameter is not UnresolvedSettings::grain_diameter.
+  void check_grain_diameter(const DemState& dem) const;
+
   UnresolvedSettings settings_;
   std::shared_ptr<const DragLaw> law_;
   PorosityMap<Dim> map_;

@@ -112,7 +112,8 @@ TEST(DragDistribution, FixedBedCarriesTheErgunPressureDrop) {
   const std::vector<Vec<3>> vd(x.size(), Vec<3>(0, 0, U));
   auto loads = distribute_reactions(field.weights, grains,
                                     resistance_reactions(field, vd, law, rho, dx * dx * dx));
-  const double i_ergun = (law.a_star(eps0) * U + law.b_star(eps0) * U * U) / g;
+  // The drag takes the grains' own diameter 2r (1.047 mm), not the law's default 1 mm.
+  const double i_ergun = (law.a_star(eps0, 2 * r) * U + law.b_star(eps0, 2 * r) * U * U) / g;
   add_pressure_gradient_forces(
       loads, grains, std::vector<Vec<3>>(grains.size(), Vec<3>(0, 0, -rho * g * i_ergun)));
   const double expected = rho * g * i_ergun * s * s * s;
@@ -171,6 +172,32 @@ TEST(DragDistribution, PressureGradientForce) {
   const Vec<2> f = pressure_gradient_force<2>(Vec<2>(0.0, -9810.0), 1e-9);
   EXPECT_DOUBLE_EQ(f[1], 9.81e-6);  // buoyancy of 1 mm^3 in water, hydrostatic grad p
   EXPECT_EQ(f[0], 0.0);
+}
+
+// A graded mixture (Beetstra, van der Hoef & Kuipers 2007, in the form for a pressure-gradient
+// force on the grains): one fluid point between a 0.5 mm and a 1 mm grain at equal distance
+// gives them shares in the ratio of their surfaces V/d (1 : 4), adding up to the reaction; the
+// reaction itself is the law's at the Sauter mean (V1 + V2) / (V1/d1 + V2/d2) = 0.9 mm.
+TEST(DragDistribution, GradedGrainsShareByTheirSurface) {
+  std::vector<Grain<3>> grains(2);
+  grains[0].tag = 5, grains[0].x = Vec<3>(-0.5e-3, 0, 0), grains[0].radius = 0.25e-3;
+  grains[1].tag = 9, grains[1].x = Vec<3>(0.5e-3, 0, 0), grains[1].radius = 0.5e-3;
+  PorosityMapSettings set;
+  set.smoothing_length = 1e-3;
+  const std::vector<Vec<3>> x = {Vec<3>::Zero()};
+  const auto field = PorosityMap<3>(set).compute(x, grains);
+  EXPECT_NEAR(field.diameter[0] / 0.9e-3, 1.0, 1e-14);
+  const SeedResistance law{SeedResistanceParameters{}};
+  const std::vector<Vec<3>> vd = {Vec<3>(0, 0, 0.01)};
+  const auto f = resistance_reactions(field, vd, law, 1000.0, 1e-9);
+  const double eps = field.porosity[0], vr = 0.01 / eps;
+  EXPECT_NEAR(f[0][2] / (eps * 1000.0 * 1e-9 * law.coefficients(eps, vr, 0.9e-3).total(vr) * vr),
+              1.0, 1e-14);
+  const auto loads = distribute_reactions(field.weights, grains, f);
+  std::printf("shares of the 0.5 / 1 mm grains: %.6f / %.6f\n", loads.force[0][2] / f[0][2],
+              loads.force[1][2] / f[0][2]);
+  EXPECT_NEAR(loads.force[1][2] / loads.force[0][2], 4.0, 1e-12);
+  EXPECT_NEAR((loads.force[0][2] + loads.force[1][2]) / f[0][2], 1.0, 1e-14);
 }
 
 }  // namespace

@@ -31,7 +31,7 @@ TEST(SeedResistance, CoefficientsOfTheValidationTable) {
 
 // Fixed bed, Darcy velocity U upward, grains at rest: v_r = U / eps (interstitial). Steady Eq. (2)
 // gives -dp/dz = rho g + rho K |v_r|, so the hydraulic gradient is i = K |v_r| / g.
-double hydraulic_gradient(const DragLaw& law, double eps, double darcy_velocity) {
+double hydraulic_gradient(const SeedResistance& law, double eps, double darcy_velocity) {
   const double vr = darcy_velocity / eps;
   return law.coefficients(eps, vr).total(vr) * vr / 9.81;
 }
@@ -148,6 +148,28 @@ TEST(SeedResistance, RejectsBadInput) {
   EXPECT_THROW(law.coefficients(0.0, 1.0), std::domain_error);
   EXPECT_THROW(law.coefficients(1.2, 1.0), std::domain_error);
   EXPECT_THROW(law.coefficients(0.5, -1.0), std::domain_error);
+  EXPECT_THROW(law.coefficients(0.5, 1.0, 0.0), std::domain_error);
+  EXPECT_THROW(law.coefficients(0.9, 1.0, -1e-3), std::domain_error);
+}
+
+// The diameter argument is the law's d_s: a law built for 1 mm asked at 0.4 mm gives what a law
+// built for 0.4 mm gives, on both branches and across the blend; Ergun's viscous part scales as
+// 1/d^2, its inertial part as 1/d.
+TEST(SeedResistance, DiameterArgumentIsTheGrainDiameter) {
+  SeedResistanceParameters p = table_parameters();
+  p.blend = true;
+  const SeedResistance one_mm(p);
+  p.grain_diameter = 0.4e-3;
+  const SeedResistance small(p);
+  for (double eps : {0.3, 0.5, 0.78, 0.8, 0.83, 0.95})
+    for (double v : {0.0, 1e-3, 0.05, 2.0}) {
+      const ResistanceCoefficients a = one_mm.coefficients(eps, v, 0.4e-3);
+      const ResistanceCoefficients b = small.coefficients(eps, v);
+      EXPECT_EQ(a.linear, b.linear) << eps << " " << v;
+      EXPECT_EQ(a.quadratic, b.quadratic) << eps << " " << v;
+    }
+  EXPECT_NEAR(one_mm.ergun(0.4, 0.4e-3).linear / one_mm.ergun(0.4).linear, 6.25, 1e-12);
+  EXPECT_NEAR(one_mm.ergun(0.4, 0.4e-3).quadratic / one_mm.ergun(0.4).quadratic, 2.5, 1e-12);
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // Porosity mapping (coupling/porosity_map): regular packings of known solid fraction in 3D and in
 // the quasi-2D slab, clear fluid, the floor, translation invariance, and the cell list against a
-// brute-force search.
+// brute-force search; the local Sauter mean diameter of graded grains.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -222,6 +222,48 @@ TEST(PorosityMap, UniformGrainVelocityIsReproduced) {
   const auto grains = lattice_grains<3>(6, 1e-3, 0.45e-3, v);
   const auto f = map.compute(random_points<3>(200, 0.0, 5e-3, 8), grains);
   for (const auto& vs : f.solid_velocity) EXPECT_LT((vs - v).norm(), 1e-14);
+}
+
+// The local diameter is the Sauter mean sum V W / sum (V W / d) of the grains in range: for a
+// mixture of 0.5 and 1.5 mm grains it lies between them and is exactly what the weights give;
+// for equal grains it is their diameter to the last bit (old cases keep their numbers).
+TEST(PorosityMap, LocalDiameterIsTheSauterMean) {
+  PorosityMapSettings set;
+  set.smoothing_length = 1.5e-3;
+  std::vector<Grain<3>> grains(3);
+  grains[0].x = Vec<3>(0.0, 0.0, 0.0), grains[0].radius = 0.25e-3;
+  grains[1].x = Vec<3>(1e-3, 0.0, 0.0), grains[1].radius = 0.75e-3;
+  grains[2].x = Vec<3>(0.0, 1.2e-3, 0.0), grains[2].radius = 0.25e-3;
+  const std::vector<Vec<3>> x = {Vec<3>(0.3e-3, 0.2e-3, 0.1e-3), Vec<3>(-1.4e-3, 0.0, 0.0),
+                                 Vec<3>(20e-3, 0.0, 0.0)};
+  const auto field = PorosityMap<3>(set).compute(x, grains);
+  for (std::size_t a = 0; a < 2; ++a) {
+    double v = 0.0, s = 0.0;
+    for (std::size_t e = field.weights.offset[a]; e < field.weights.offset[a + 1]; ++e) {
+      v += field.weights.weight[e];
+      s += field.weights.weight[e] / (2.0 * grains[field.weights.grain[e]].radius);
+    }
+    std::printf("point %zu: d_32 = %.6f mm over %zu grains\n", a, 1e3 * field.diameter[a],
+                field.weights.offset[a + 1] - field.weights.offset[a]);
+    EXPECT_NEAR(field.diameter[a], v / s, 1e-15);
+  }
+  for (std::size_t a = 0; a < 2; ++a) {  // both sizes in range: true mixtures
+    EXPECT_GT(field.diameter[a], 0.55e-3);
+    EXPECT_LT(field.diameter[a], 1.45e-3);
+  }
+  EXPECT_EQ(field.diameter[2], 0.0);  // no grain in range
+
+  std::vector<Grain<3>> equal = lattice_grains<3>(4, 1e-3, 0.4e-3, Vec<3>::Zero());
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 3e-3);
+  std::vector<Vec<3>> y(200);
+  for (auto& p : y) p = Vec<3>(u(rng), u(rng), u(rng));
+  const auto same = PorosityMap<3>(set).compute(y, equal);
+  for (std::size_t a = 0; a < y.size(); ++a) {
+    if (same.weights.offset[a + 1] > same.weights.offset[a]) {
+      EXPECT_EQ(same.diameter[a], 0.8e-3);
+    }
+  }
 }
 
 }  // namespace

@@ -172,5 +172,45 @@ TEST(UnresolvedCoupling, NoGrainsLeaveTheFluidClear) {
   }
 }
 
+// unresolved.grain_diameter is a check: grains of that size pass, and a grain of another size
+// stops the run with a message that names it and the fix.
+TEST(UnresolvedCoupling, GrainDiameterKeyNamesTheGrainsThatDiffer) {
+  isph::Domain<2> domain;
+  domain.hi = {0.01, 0.01};
+  domain.periodic = {true, true};
+  isph::Particles<2> P;
+  P.spacing = 1e-3;
+  P.volume = 1e-6;
+  isph::fill_box<2>(P, domain.lo, domain.hi, 1e-3, isph::kFluid);
+  isph::IsphConfig<2> cfg;
+  cfg.free_surface = false;
+  isph::IsphSolver<2> solver(cfg, domain, std::move(P));
+  UnresolvedSettings s;
+  s.map.smoothing_length = 1.3e-3;
+  s.map.slab_thickness = 1e-3;
+  s.grain_diameter = 1e-3;
+  UnresolvedCoupling<2> stage(s, std::make_shared<SeedResistance>(SeedResistanceParameters{}));
+  DemState dem;
+  for (int k = 0; k < 4; ++k) {
+    DemAtom a;
+    a.tag = 11 + k;
+    a.x = {2e-3 * (k + 1), 5e-3, 0.5e-3};
+    a.radius = 0.5e-3;
+    dem.atoms.push_back(a);
+  }
+  EXPECT_NO_THROW(stage.initialize(dem, solver));
+  dem.atoms[2].radius = 0.4e-3;
+  try {
+    stage.initialize(dem, solver);
+    ADD_FAILURE() << "a 0.8 mm grain passed the 1 mm check";
+  } catch (const std::runtime_error& e) {
+    const std::string m = e.what();
+    std::printf("%s\n", m.c_str());
+    EXPECT_NE(m.find("1 of the 4"), std::string::npos);
+    EXPECT_NE(m.find("grain 13: 0.0008 m"), std::string::npos);
+    EXPECT_NE(m.find("remove unresolved.grain_diameter"), std::string::npos);
+  }
+}
+
 }  // namespace
 }  // namespace isphdem

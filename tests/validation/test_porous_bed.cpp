@@ -48,14 +48,15 @@ double bed_porosity(double y) {
 
 // The body force that drives Darcy velocity U through the column: mean of K U/eps over the
 // particles' initial porosities (the discrete form of (1/L) int K U/eps dy).
-double drive_for(double U, const std::vector<double>& eps, const DragLaw& law) {
+double drive_for(double U, const std::vector<double>& eps, const SeedResistance& law) {
   double sum = 0;
   for (double e : eps) sum += law.coefficients(e, U / e).total(U / e) * U / e;
   return sum / static_cast<double>(eps.size());
 }
 
 // Sets eps, v_s = 0 and K = law(eps, |v_D/eps|) on every particle.
-void set_porous_terms(isph::Particles<2>& P, const std::vector<double>& eps, const DragLaw& law) {
+void set_porous_terms(isph::Particles<2>& P, const std::vector<double>& eps,
+                      const SeedResistance& law) {
   for (std::size_t i = 0; i < P.size(); ++i) {
     P.porosity[i] = eps[i];
     P.solid_velocity[i].setZero();
