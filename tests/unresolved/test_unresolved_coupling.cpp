@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <random>
 
 #include "isph_solver.hpp"
@@ -148,8 +149,8 @@ TEST(UnresolvedCoupling, WideKernelSeesImagesOnBothSidesOfAPeriodicBox) {
   EXPECT_THROW(too_wide.initialize(dem, solver), std::runtime_error);
 }
 
-// With no grains in range, the stage leaves the fluid exactly clear (eps = 1, K = 0).
-TEST(UnresolvedCoupling, NoGrainsLeaveTheFluidClear) {
+// Still water in a 10 mm periodic square at dx = 1 mm, and the settings of a 1 mm slab.
+std::unique_ptr<isph::IsphSolver<2>> still_square() {
   isph::Domain<2> domain;
   domain.hi = {0.01, 0.01};
   domain.periodic = {true, true};
@@ -159,11 +160,22 @@ TEST(UnresolvedCoupling, NoGrainsLeaveTheFluidClear) {
   isph::fill_box<2>(P, domain.lo, domain.hi, 1e-3, isph::kFluid);
   isph::IsphConfig<2> cfg;
   cfg.free_surface = false;
-  isph::IsphSolver<2> solver(cfg, domain, std::move(P));
+  return std::make_unique<isph::IsphSolver<2>>(cfg, domain, std::move(P));
+}
+
+UnresolvedSettings slab_settings() {
   UnresolvedSettings s;
   s.map.smoothing_length = 1.3e-3;
   s.map.slab_thickness = 1e-3;
-  UnresolvedCoupling<2> stage(s, std::make_shared<SeedResistance>(SeedResistanceParameters{}));
+  return s;
+}
+
+// With no grains in range, the stage leaves the fluid exactly clear (eps = 1, K = 0).
+TEST(UnresolvedCoupling, NoGrainsLeaveTheFluidClear) {
+  const auto solver_ptr = still_square();
+  auto& solver = *solver_ptr;
+  UnresolvedCoupling<2> stage(slab_settings(),
+                              std::make_shared<SeedResistance>(SeedResistanceParameters{}));
   DemState dem;
   stage.before_fluid_step(dem, solver);
   for (std::size_t i = 0; i < solver.particles().size(); ++i) {
@@ -175,19 +187,9 @@ TEST(UnresolvedCoupling, NoGrainsLeaveTheFluidClear) {
 // unresolved.grain_diameter is a check: grains of that size pass, and a grain of another size
 // stops the run with a message that names it and the fix.
 TEST(UnresolvedCoupling, GrainDiameterKeyNamesTheGrainsThatDiffer) {
-  isph::Domain<2> domain;
-  domain.hi = {0.01, 0.01};
-  domain.periodic = {true, true};
-  isph::Particles<2> P;
-  P.spacing = 1e-3;
-  P.volume = 1e-6;
-  isph::fill_box<2>(P, domain.lo, domain.hi, 1e-3, isph::kFluid);
-  isph::IsphConfig<2> cfg;
-  cfg.free_surface = false;
-  isph::IsphSolver<2> solver(cfg, domain, std::move(P));
-  UnresolvedSettings s;
-  s.map.smoothing_length = 1.3e-3;
-  s.map.slab_thickness = 1e-3;
+  const auto solver_ptr = still_square();
+  auto& solver = *solver_ptr;
+  UnresolvedSettings s = slab_settings();
   s.grain_diameter = 1e-3;
   UnresolvedCoupling<2> stage(s, std::make_shared<SeedResistance>(SeedResistanceParameters{}));
   DemState dem;
