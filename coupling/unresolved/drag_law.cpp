@@ -45,9 +45,9 @@ double SeedResistance::reynolds(double eps, double speed, double d) const {
   return eps * eps * d * speed / p_.kinematic_viscosity;
 }
 
-double SeedResistance::c_star(double eps, double speed) const {
-  return 0.75 * wen_yu_drag_coefficient(reynolds(eps, speed)) * (1.0 - eps) /
-         (std::pow(eps, p_.wen_yu_exponent) * p_.grain_diameter);
+double SeedResistance::c_star(double eps, double speed, double d) const {
+  return 0.75 * wen_yu_drag_coefficient(reynolds(eps, speed, d)) * (1.0 - eps) /
+         (std::pow(eps, p_.wen_yu_exponent) * d);
 }
 
 ResistanceCoefficients SeedResistance::ergun(double eps, double d) const {

@@ -78,7 +78,10 @@ class SeedResistance final : public DragLaw {
   double a_star(double porosity, double diameter) const;
   double b_star(double porosity) const { return b_star(porosity, p_.grain_diameter); }
   double b_star(double porosity, double diameter) const;
-  double c_star(double porosity, double relative_speed) const;
+  double c_star(double porosity, double relative_speed) const {
+    return c_star(porosity, relative_speed, p_.grain_diameter);
+  }
+  double c_star(double porosity, double relative_speed, double diameter) const;
   // Eq. (8): Re = eps_hat rho d eps |v_r| / mu = eps^2 d |v_r| / nu (the apparent density
   // eps rho brings one eps, the seed's explicit eps a second; standard Wen–Yu has only one).
   double reynolds(double porosity, double relative_speed) const {

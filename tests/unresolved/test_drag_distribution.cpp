@@ -228,5 +228,39 @@ TEST(DragDistribution, GradedGrainsShareByTheirSurface) {
   EXPECT_NEAR((loads.force[0][2] + loads.force[1][2]) / f[0][2], 1.0, 1e-14);
 }
 
+// Equal grains keep the volume shares of the code before graded grains, to the last bit: every
+// grain's load is exactly depth f_a w_ak / sum_k' w_ak' summed over the fluid points, in order.
+TEST(DragDistribution, EqualGrainsKeepTheirVolumeSharesExactly) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 6e-3), f(-1.0, 1.0);
+  std::vector<Grain<3>> grains(40);
+  for (std::size_t k = 0; k < grains.size(); ++k) {
+    grains[k].tag = static_cast<int>(k) + 1;
+    grains[k].x = Vec<3>(u(rng), u(rng), u(rng));
+    grains[k].radius = 0.37e-3;
+  }
+  std::vector<Vec<3>> x(500), reaction(500);
+  for (std::size_t a = 0; a < x.size(); ++a) {
+    x[a] = Vec<3>(u(rng), u(rng), u(rng));
+    reaction[a] = Vec<3>(f(rng), f(rng), f(rng)) * 1e-5;
+  }
+  PorosityMapSettings set;
+  set.smoothing_length = 1.2e-3;
+  const auto field = PorosityMap<3>(set).compute(x, grains);
+  const double depth = 2e-3;
+  const GrainLoads<3> loads = distribute_reactions(field.weights, grains, reaction, depth);
+  std::vector<Vec<3>> volume_shares(grains.size(), Vec<3>::Zero());
+  for (std::size_t a = 0; a < x.size(); ++a) {
+    const std::size_t b = field.weights.offset[a], e = field.weights.offset[a + 1];
+    double sum = 0.0;
+    for (std::size_t i = b; i < e; ++i) sum += field.weights.weight[i];
+    if (!(sum > 0.0)) continue;
+    const Vec<3> fa = depth * reaction[a] / sum;
+    for (std::size_t i = b; i < e; ++i)
+      volume_shares[field.weights.grain[i]] += field.weights.weight[i] * fa;
+  }
+  for (std::size_t k = 0; k < grains.size(); ++k) EXPECT_EQ(loads.force[k], volume_shares[k]);
+}
+
 }  // namespace
 }  // namespace isphdem
