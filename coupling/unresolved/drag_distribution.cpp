@@ -38,23 +38,19 @@ GrainLoads<Dim> distribute_reactions(const GrainWeights& weights,
   loads.force.assign(grains.size(), isph::Vec<Dim>::Zero());
   for (std::size_t a = 0; a < fluid_reaction.size(); ++a) {
     const std::size_t b = weights.offset[a], e = weights.offset[a + 1];
-    for (std::size_t i = b; i < e; ++i)
-      if (weights.grain[i] >= grains.size())
-        throw std::invalid_argument("drag distribution: weights refer to a missing grain");
-    // Each grain's share is its surface in the kernel, V_k W / d_k (relative to the first
-    // grain's size, so that equal grains get exactly their volume share).
-    const double r_first = b < e ? grains[weights.grain[b]].radius : 0.0;
+    // Each grain's share is its surface in the kernel (GrainWeights::surface).
     double sum = 0.0;
-    for (std::size_t i = b; i < e; ++i)
-      sum += weights.weight[i] * (r_first / grains[weights.grain[i]].radius);
+    for (std::size_t i = b; i < e; ++i) sum += weights.surface[i];
     if (!(sum > 0.0)) {
       loads.unassigned += depth * fluid_reaction[a];
       continue;
     }
     const isph::Vec<Dim> fa = depth * fluid_reaction[a] / sum;
-    for (std::size_t i = b; i < e; ++i)
-      loads.force[weights.grain[i]] +=
-          (weights.weight[i] * (r_first / grains[weights.grain[i]].radius)) * fa;
+    for (std::size_t i = b; i < e; ++i) {
+      if (weights.grain[i] >= grains.size())
+        throw std::invalid_argument("drag distribution: weights refer to a missing grain");
+      loads.force[weights.grain[i]] += weights.surface[i] * fa;
+    }
   }
   return loads;
 }

@@ -119,8 +119,8 @@ PorosityField<Dim> PorosityMap<Dim>::compute(const std::vector<isph::Vec<Dim>>& 
       outside = outside || lo[d] > hi[d];
     }
     double solid = 0.0;
-    // Surface sum relative to the first grain in range: sum V W r_first / r_k equals the volume
-    // sum to the last bit when every grain has one size, so d_32 is then exactly that size.
+    // Surface sum relative to the first grain in range (GrainWeights::surface): it equals the
+    // volume sum to the last bit when every grain has one size, so d_32 is then exactly that size.
     double surface = 0.0, r_first = 0.0;
     V vsum = V::Zero();
     if (!outside) {
@@ -133,11 +133,13 @@ PorosityField<Dim> PorosityMap<Dim>::compute(const std::vector<isph::Vec<Dim>>& 
           if (r >= support) continue;
           const double w = grains[k].volume() * kernel_.value(r);
           if (w <= 0.0) continue;
+          if (r_first == 0.0) r_first = grains[k].radius;
+          const double ws = w * (r_first / grains[k].radius);
           out.weights.grain.push_back(k);
           out.weights.weight.push_back(w);
-          if (r_first == 0.0) r_first = grains[k].radius;
+          out.weights.surface.push_back(ws);
           solid += w;
-          surface += w * (r_first / grains[k].radius);
+          surface += ws;
           vsum += w * grains[k].v;
         }
         int d = 0;

@@ -37,11 +37,15 @@ struct PorosityMapSettings {
 };
 
 // Compressed rows: fluid point a has entries [offset[a], offset[a+1]) with the grain index
-// (into the grains passed to compute) and V_k W_p(|x_a - x_k|) [m^3 / m^Dim].
+// (into the grains passed to compute), V_k W_p(|x_a - x_k|) [m^3 / m^Dim], and the same times
+// r_first / r_k, r_first the radius of the row's first grain: the grain's surface in the kernel
+// up to the row's common factor, by which the drag is shared (drag_distribution.hpp). For equal
+// grains `surface` equals `weight` to the last bit.
 struct GrainWeights {
   std::vector<std::size_t> offset;
   std::vector<std::size_t> grain;
   std::vector<double> weight;
+  std::vector<double> surface;
   std::size_t fluid_count() const { return offset.empty() ? 0 : offset.size() - 1; }
 };
 
