@@ -13,7 +13,8 @@ std::vector<std::string> unresolved_keys() {
           "unresolved.alpha",
           "unresolved.beta",
           "unresolved.blend",
-          "unresolved.blend_half_width"};
+          "unresolved.blend_half_width",
+          "unresolved.self_induced_correction"};
 }
 
 template <int Dim>
@@ -40,6 +41,12 @@ std::unique_ptr<UnresolvedCoupling<Dim>> make_unresolved_coupling(const CaseFile
                     ") must be positive in a case with [unresolved], whose drag law divides by "
                     "it (water: 1e-6)");
   p.kinematic_viscosity = viscosity;
+  s.kinematic_viscosity = viscosity;
+  s.self_induced_correction = c.boolean("unresolved.self_induced_correction", false);
+  if (Dim == 2 && s.self_induced_correction)
+    throw CaseError(
+        "'unresolved.self_induced_correction' is for 3D cases: in a 2D fluid a grain's own "
+        "disturbance has no finite Stokes limit; remove the key");
   p.alpha = c.positive("unresolved.alpha", p.alpha);
   p.beta = c.positive("unresolved.beta", p.beta);
   p.blend = c.boolean("unresolved.blend", p.blend);

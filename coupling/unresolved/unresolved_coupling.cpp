@@ -1,6 +1,8 @@
 #include "unresolved/unresolved_coupling.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -23,6 +25,14 @@ UnresolvedCoupling<Dim>::UnresolvedCoupling(const UnresolvedSettings& settings,
       map_(settings.map),
       depth_(Dim == 2 ? settings.map.slab_thickness : 1.0) {
   if (!law_) throw std::invalid_argument("unresolved coupling: no drag law");
+  if (settings.self_induced_correction) {
+    if (Dim != 3)
+      throw std::invalid_argument(
+          "unresolved.self_induced_correction is for 3D fluids: in 2D a line force's disturbance "
+          "has no finite Stokes limit; remove the key");
+    self_induced_ = std::make_unique<SelfInducedVelocity>(
+        settings.map.kernel, settings.map.smoothing_length, settings.kinematic_viscosity);
+  }
 }
 
 template <int Dim>
@@ -128,6 +138,80 @@ void UnresolvedCoupling<Dim>::before_fluid_step(const DemState& dem,
     const double vr = (P.v[i] / eps - P.solid_velocity[i]).norm();
     P.resistance[i] = eps < 1.0 ? law_->coefficients(eps, vr, field_.diameter[r]).total(vr) : 0.0;
   }
+  if (self_induced_) correct_for_self_induced_velocity(solver, rows);
+}
+
+template <int Dim>
+void UnresolvedCoupling<Dim>::correct_for_self_induced_velocity(
+    isph::IsphSolver<Dim>& solver, const std::vector<std::size_t>& rows) {
+  // Above it a grain's own disturbance is as large as its slip: the correction's 1 / (1 - s)
+  // would run away, and the grain is no longer small against the kernel (use a wider one).
+  constexpr double kCap = 0.8;
+  auto& P = solver.particles();
+  const double rho = solver.config().density;
+  const double mu = rho * settings_.kinematic_viscosity;
+  const auto& w = field_.weights;
+  const std::size_t n = grains_.size();
+  // Per grain: B = sum share eps rho V K, the drag per unit slip the law gives it; B times the
+  // slip it samples; and the others' resistance per unit volume around it, kernel-weighted, for
+  // the Brinkman screening length sqrt(mu / b).
+  std::vector<double> sums(n * (Dim + 3), 0.0);
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const std::size_t i = rows[r];
+    const double eps = P.porosity[i];
+    if (!(eps < 1.0)) continue;
+    double surface = 0.0;
+    for (std::size_t e = w.offset[r]; e < w.offset[r + 1]; ++e) surface += w.surface[e];
+    const double b = eps * rho * P.resistance[i];
+    const isph::Vec<Dim> slip = P.v[i] / eps - P.solid_velocity[i];
+    for (std::size_t e = w.offset[r]; e < w.offset[r + 1]; ++e) {
+      const double share = w.surface[e] / surface;
+      double* g = &sums[w.grain[e] * (Dim + 3)];
+      g[0] += share * b * P.volume;
+      for (int a = 0; a < Dim; ++a) g[1 + a] += share * b * P.volume * slip[a];
+      g[Dim + 1] += w.weight[e] * b * (1.0 - share);
+      g[Dim + 2] += w.weight[e];
+    }
+  }
+  if (const isph::RowShare* ranks = solver.decomposition())
+    if (!sums.empty()) ranks->sum_in_place(sums.data(), sums.size());
+  for (std::size_t k = 0; k < n; ++k)  // images into their grain
+    if (owner_[k] != k)
+      for (int a = 0; a < Dim + 3; ++a) sums[owner_[k] * (Dim + 3) + a] += sums[k * (Dim + 3) + a];
+  std::vector<double> factor(n, 1.0);
+  balance_.max_self_induced = 0.0;
+  balance_.self_induced_capped = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (owner_[k] != k) continue;
+    const double* g = &sums[k * (Dim + 3)];
+    if (!(g[0] > 0.0)) continue;
+    isph::Vec<Dim> slip;
+    for (int a = 0; a < Dim; ++a) slip[a] = g[1 + a] / g[0];
+    const double background = g[Dim + 2] > 0.0 ? g[Dim + 1] / g[Dim + 2] : 0.0;
+    const double screening =
+        background > 0.0 ? std::sqrt(mu / background) : std::numeric_limits<double>::infinity();
+    const double s =
+        g[0] * self_induced_->inverse_radius(slip.norm(), screening) / (6.0 * M_PI * mu);
+    balance_.max_self_induced = std::max(balance_.max_self_induced, s);
+    if (s > kCap) ++balance_.self_induced_capped;
+    factor[k] = 1.0 / (1.0 - std::min(s, kCap));
+  }
+  for (std::size_t k = 0; k < n; ++k) factor[k] = factor[owner_[k]];
+  // Each particle's resistance by its grains' factors, shared as their drag is; the law's
+  // Reynolds number at the slip undisturbed by the grains' own wakes.
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const std::size_t i = rows[r];
+    const double eps = P.porosity[i];
+    if (!(eps < 1.0)) continue;
+    double surface = 0.0, c = 0.0;
+    for (std::size_t e = w.offset[r]; e < w.offset[r + 1]; ++e) {
+      surface += w.surface[e];
+      c += w.surface[e] * factor[w.grain[e]];
+    }
+    c /= surface;
+    const double vr = c * (P.v[i] / eps - P.solid_velocity[i]).norm();
+    P.resistance[i] = c * law_->coefficients(eps, vr, field_.diameter[r]).total(vr);
+  }
 }
 
 template <int Dim>
@@ -141,7 +225,10 @@ void UnresolvedCoupling<Dim>::after_fluid_step(const DemState&, const isph::Isph
   const std::size_t rows = mapped_ids_.size();
   std::vector<isph::Vec<Dim>> reaction(rows, isph::Vec<Dim>::Zero());
   std::vector<int> at(rows);
+  const UnresolvedBalance<Dim> before = balance_;
   balance_ = {};
+  balance_.max_self_induced = before.max_self_induced;
+  balance_.self_induced_capped = before.self_induced_capped;
   for (std::size_t r = 0; r < rows; ++r) {
     const int i = index_of[mapped_ids_[r]];
     if (i < 0) throw std::logic_error("unresolved coupling: a mapped particle disappeared");

@@ -14,6 +14,7 @@
 #include "coupling_stage.hpp"
 #include "unresolved/drag_law.hpp"
 #include "unresolved/porosity_map.hpp"
+#include "unresolved/self_induced_velocity.hpp"
 
 namespace isphdem {
 
@@ -26,6 +27,10 @@ struct UnresolvedSettings {
   // unresolved.grain_diameter when the case gives it: initialize() stops if an unresolved grain
   // has another diameter. 0: no check (the drag always takes each grain's own size).
   double grain_diameter = 0.0;
+  // unresolved.self_induced_correction (3D only): each grain's drag from the fluid's velocity less
+  // the part its own reaction induced there (self_induced_velocity.hpp); needs the viscosity.
+  bool self_induced_correction = false;
+  double kinematic_viscosity = 0.0;  // [m^2/s]
 };
 
 template <int Dim>
@@ -34,6 +39,10 @@ struct UnresolvedBalance {
   isph::Vec<Dim> grain_drag = isph::Vec<Dim>::Zero();        // sum of the drag handed to grains
   isph::Vec<Dim> grain_pressure = isph::Vec<Dim>::Zero();    // sum of -grad p V_k
   std::size_t grains = 0, floored = 0;
+  // With the self-induced correction: the largest s = F u_self / (F u_rel) of a grain, and how
+  // many grains had s above the cap (their drag raised by at most 1 / (1 - cap)).
+  double max_self_induced = 0.0;
+  std::size_t self_induced_capped = 0;
 };
 
 template <int Dim>
@@ -59,6 +68,10 @@ class UnresolvedCoupling final : public CouplingStage<Dim> {
  private:
   // Throws naming the grains whose diameter is not UnresolvedSettings::grain_diameter.
   void check_grain_diameter(const DemState& dem) const;
+  // Raises the resistance of the rows of grains_ by each grain's 1 / (1 - s), s = B I / (6 pi mu)
+  // (self_induced_velocity.hpp); rows[r] is the particle of row r of field_.
+  void correct_for_self_induced_velocity(isph::IsphSolver<Dim>& solver,
+                                         const std::vector<std::size_t>& rows);
 
   UnresolvedSettings settings_;
   std::shared_ptr<const DragLaw> law_;
@@ -69,6 +82,7 @@ class UnresolvedCoupling final : public CouplingStage<Dim> {
   PorosityField<Dim> field_;
   std::vector<std::int64_t> mapped_ids_;  // particle id of each row of field_ (pre-step order)
   UnresolvedBalance<Dim> balance_;
+  std::unique_ptr<SelfInducedVelocity> self_induced_;  // with self_induced_correction only
 };
 
 }  // namespace isphdem

@@ -18,7 +18,7 @@ namespace isphdem {
 namespace {
 
 template <int Dim>
-void check_momentum(unsigned seed) {
+void check_momentum(unsigned seed, bool self_induced = false) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   const double dx = 1e-3, L = 10 * dx;
@@ -57,6 +57,8 @@ void check_momentum(unsigned seed) {
   s.map.slab_thickness = T;
   SeedResistanceParameters p;
   p.blend = true;
+  s.self_induced_correction = self_induced;
+  s.kinematic_viscosity = cfg.viscosity;
   UnresolvedCoupling<Dim> stage(s, std::make_shared<SeedResistance>(p));
   stage.initialize(dem, solver);
   DemLoads loads;
@@ -88,6 +90,10 @@ void check_momentum(unsigned seed) {
   EXPECT_GT(scale, 0.0);
   EXPECT_LT(err, 1e-12);
   EXPECT_LT((b.fluid_resistance - resistance).norm() / scale, 1e-12);
+  // The correction raised some grain's drag, and the reaction rose with it (above).
+  if (self_induced) {
+    EXPECT_GT(b.max_self_induced, 0.0);
+  }
   // One load per fine grain, none for the clump member, none twice (periodic images merged).
   EXPECT_EQ(loads.atom_tags.size(), 60u);
   for (int tag : loads.atom_tags) EXPECT_NE(tag, 7);
@@ -103,6 +109,24 @@ void check_momentum(unsigned seed) {
 
 TEST(UnresolvedCoupling, MomentumIsConservedIn2D) { check_momentum<2>(3); }
 TEST(UnresolvedCoupling, MomentumIsConservedIn3D) { check_momentum<3>(5); }
+// The self-induced correction scales each particle's resistance; the grains' drag follows it.
+TEST(UnresolvedCoupling, MomentumIsConservedWithTheSelfInducedCorrection) {
+  check_momentum<3>(7, true);
+}
+
+TEST(UnresolvedCoupling, SelfInducedCorrectionIsRefusedIn2D) {
+  UnresolvedSettings s;
+  s.map.smoothing_length = 1.3e-3;
+  s.map.slab_thickness = 1e-3;
+  s.self_induced_correction = true;
+  s.kinematic_viscosity = 1e-6;
+  try {
+    UnresolvedCoupling<2> stage(s, std::make_shared<SeedResistance>(SeedResistanceParameters{}));
+    FAIL() << "a 2D stage took the self-induced correction";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("self_induced_correction"), std::string::npos) << e.what();
+  }
+}
 
 // A porosity kernel wider than half a periodic box needs each grain's images on both sides: a
 // simple cubic lattice of touching spheres (2 per axis in an 8 mm box) seen through a kernel
