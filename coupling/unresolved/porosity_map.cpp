@@ -25,6 +25,20 @@ PorosityMap<Dim>::PorosityMap(const PorosityMapSettings& s)
     throw std::invalid_argument("porosity map: minimum porosity must be in (0, 1)");
   if (Dim == 2 && !(s.slab_thickness > 0.0))
     throw std::invalid_argument("porosity map: a 2D fluid needs the DEM slab thickness (> 0)");
+  if (!(s.smoothing_diameters >= 0.0))
+    throw std::invalid_argument("porosity map: smoothing in grain diameters must be >= 0");
+}
+
+template <int Dim>
+double PorosityMap<Dim>::smoothing_length_of(double radius) const {
+  return std::max(settings_.smoothing_length, settings_.smoothing_diameters * 2.0 * radius);
+}
+
+template <int Dim>
+double PorosityMap<Dim>::support(const std::vector<Grain<Dim>>& grains) const {
+  double h = settings_.smoothing_length;
+  for (const auto& g : grains) h = std::max(h, smoothing_length_of(g.radius));
+  return 2.0 * h;
 }
 
 namespace {
@@ -106,7 +120,19 @@ PorosityField<Dim> PorosityMap<Dim>::compute(const std::vector<isph::Vec<Dim>>& 
   out.weights.offset.assign(n + 1, 0);
   if (grains.empty()) return out;
 
-  const double support = kernel_.support();
+  // Each grain's own kernel; the common one (bit for bit as before) where it is not widened.
+  std::vector<isph::Kernel<Dim>> own;
+  std::vector<const isph::Kernel<Dim>*> kernel_of(grains.size(), &kernel_);
+  if (settings_.smoothing_diameters > 0.0) {
+    own.reserve(grains.size());
+    for (std::size_t k = 0; k < grains.size(); ++k) {
+      const double h = smoothing_length_of(grains[k].radius);
+      if (h == settings_.smoothing_length) continue;
+      own.emplace_back(settings_.kernel, h);
+      kernel_of[k] = &own.back();
+    }
+  }
+  const double support = this->support(grains);
   const GrainGrid<Dim> grid = build_grid(grains, support);
   for (std::size_t a = 0; a < n; ++a) {
     const V& xa = fluid_x[a];
@@ -131,7 +157,7 @@ PorosityField<Dim> PorosityMap<Dim>::compute(const std::vector<isph::Vec<Dim>>& 
           const std::size_t k = grid.order[i];
           const double r = (xa - grains[k].x).norm();
           if (r >= support) continue;
-          const double w = grains[k].volume() * kernel_.value(r);
+          const double w = grains[k].volume() * kernel_of[k]->value(r);
           if (w <= 0.0) continue;
           if (r_first == 0.0) r_first = grains[k].radius;
           const double ws = w * (r_first / grains[k].radius);

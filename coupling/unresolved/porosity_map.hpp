@@ -28,6 +28,9 @@ struct Grain {
 
 struct PorosityMapSettings {
   double smoothing_length = 0.0;  // h_p [m]; support 2 h_p
+  // When > 0, grain k's kernel is max(h_p, smoothing_diameters x d_k) wide: a grain not much
+  // smaller than dx then sees its own volume spread over enough water (docs/unresolved.md).
+  double smoothing_diameters = 0.0;
   isph::KernelType kernel = isph::KernelType::WendlandC2;
   // 0.25 lies below the densest packing of equal spheres (1 - pi/(3 sqrt 2) = 0.2595) and far
   // below any quasi-2D slab packing (>= 0.395): only kernel overshoot can reach it, and it keeps
@@ -72,6 +75,10 @@ class PorosityMap {
                              const std::vector<Grain<Dim>>& grains) const;
 
   const PorosityMapSettings& settings() const { return settings_; }
+  // The smoothing length of a grain of this radius, and the support of the widest kernel of
+  // these grains (the base support when there are none).
+  double smoothing_length_of(double radius) const;
+  double support(const std::vector<Grain<Dim>>& grains) const;
   double support() const { return kernel_.support(); }
 
  private:

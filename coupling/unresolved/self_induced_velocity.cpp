@@ -50,12 +50,10 @@ double axis_value(int i, int n, double max) { return std::expm1(i * std::log1p(m
 
 }  // namespace
 
-SelfInducedVelocity::SelfInducedVelocity(isph::KernelType kernel, double smoothing_length,
-                                         double kinematic_viscosity)
-    : h_(smoothing_length), nu_(kinematic_viscosity) {
-  if (!(h_ > 0.0) || !(nu_ > 0.0))
-    throw std::invalid_argument(
-        "self-induced velocity: the smoothing length and the viscosity must be positive");
+SelfInducedVelocity::SelfInducedVelocity(isph::KernelType kernel, double kinematic_viscosity)
+    : nu_(kinematic_viscosity) {
+  if (!(nu_ > 0.0))
+    throw std::invalid_argument("self-induced velocity: the viscosity must be positive");
   std::vector<double> q(kWaveNumbers);
   const double dq = kWaveNumberMax / kWaveNumbers;
   for (int k = 0; k < kWaveNumbers; ++k) q[k] = (k + 0.5) * dq;
@@ -91,9 +89,12 @@ double SelfInducedVelocity::table_value(double oseen, double screening) const {
                   s * ((1.0 - t) * at(i + 1, j) + t * at(i + 1, j + 1)));
 }
 
-double SelfInducedVelocity::inverse_radius(double slip_speed, double screening_length) const {
-  const double screening = std::isfinite(screening_length) ? h_ / screening_length : 0.0;
-  return table_value(std::abs(slip_speed) * h_ / nu_, screening) / h_;
+double SelfInducedVelocity::inverse_radius(double slip_speed, double screening_length,
+                                           double h) const {
+  if (!(h > 0.0))
+    throw std::invalid_argument("self-induced velocity: the smoothing length must be > 0");
+  const double screening = std::isfinite(screening_length) ? h / screening_length : 0.0;
+  return table_value(std::abs(slip_speed) * h / nu_, screening) / h;
 }
 
 }  // namespace isphdem

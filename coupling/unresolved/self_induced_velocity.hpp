@@ -24,19 +24,20 @@ namespace isphdem {
 
 class SelfInducedVelocity {
  public:
-  // The porosity kernel (type, smoothing length h [m]) and the fluid's kinematic viscosity
-  // [m^2/s]. Tabulates I h over the slip's and the screening's dimensionless ranges.
-  SelfInducedVelocity(isph::KernelType kernel, double smoothing_length, double kinematic_viscosity);
+  // The porosity kernel's shape and the fluid's kinematic viscosity [m^2/s]. Tabulates I h over
+  // the slip's and the screening's dimensionless ranges, for every smoothing length h.
+  SelfInducedVelocity(isph::KernelType kernel, double kinematic_viscosity);
 
-  // I [1/m] at slip speed U >= 0 [m/s] and screening length L > 0 [m] (infinity: none).
-  double inverse_radius(double slip_speed, double screening_length) const;
+  // I [1/m] of a kernel of smoothing length h > 0 [m] at slip speed U >= 0 [m/s] and screening
+  // length L > 0 [m] (infinity: none).
+  double inverse_radius(double slip_speed, double screening_length, double h) const;
   // The Stokes limit, U = 0 and no screening.
-  double stokes_inverse_radius() const { return std::exp(table_.front()) / h_; }
+  double stokes_inverse_radius(double h) const { return std::exp(table_.front()) / h; }
 
  private:
   double table_value(double oseen, double screening) const;  // I h at U h / nu and h / L
 
-  double h_, nu_;
+  double nu_;
   // log(I h) on [oseen][screening], log1p-spaced axes: I falls as a power of both far out.
   std::vector<double> table_;
 };

@@ -14,7 +14,8 @@ std::vector<std::string> unresolved_keys() {
           "unresolved.beta",
           "unresolved.blend",
           "unresolved.blend_half_width",
-          "unresolved.self_induced_correction"};
+          "unresolved.self_induced_correction",
+          "unresolved.porosity_smoothing_diameters"};
 }
 
 template <int Dim>
@@ -23,6 +24,8 @@ std::unique_ptr<UnresolvedCoupling<Dim>> make_unresolved_coupling(const CaseFile
   UnresolvedSettings s;
   s.map.smoothing_length = c.positive("unresolved.porosity_smoothing_length", fluid_h);
   s.map.min_porosity = c.positive("unresolved.min_porosity", s.map.min_porosity);
+  if (c.has("unresolved.porosity_smoothing_diameters"))
+    s.map.smoothing_diameters = c.positive("unresolved.porosity_smoothing_diameters");
   if (s.map.min_porosity >= 1.0)
     throw CaseError("'unresolved.min_porosity' must lie in (0, 1); 0.25 suits equal spheres");
   if (Dim == 2) s.map.slab_thickness = slab_thickness(c);

@@ -30,21 +30,25 @@ UnresolvedCoupling<Dim>::UnresolvedCoupling(const UnresolvedSettings& settings,
       throw std::invalid_argument(
           "unresolved.self_induced_correction is for 3D fluids: in 2D a line force's disturbance "
           "has no finite Stokes limit; remove the key");
-    self_induced_ = std::make_unique<SelfInducedVelocity>(
-        settings.map.kernel, settings.map.smoothing_length, settings.kinematic_viscosity);
+    self_induced_ =
+        std::make_unique<SelfInducedVelocity>(settings.map.kernel, settings.kinematic_viscosity);
   }
 }
 
 template <int Dim>
 void UnresolvedCoupling<Dim>::initialize(const DemState& dem, isph::IsphSolver<Dim>& solver) {
   const auto& d = solver.domain();
+  double widest = map_.support();
+  for (const auto& a : dem.atoms)
+    if (maps(a)) widest = std::max(widest, 2.0 * map_.smoothing_length_of(a.radius));
   for (int k = 0; k < Dim; ++k)
-    if (d.periodic[k] && map_.support() > d.hi[k] - d.lo[k])
+    if (d.periodic[k] && widest > d.hi[k] - d.lo[k])
       throw std::runtime_error(
-          "the porosity kernel reaches " + isph::format_number(map_.support()) +
+          "the porosity kernel reaches " + isph::format_number(widest) +
           " m, farther than the periodic box is long on axis " + std::to_string(k) + " (" +
           isph::format_number(d.hi[k] - d.lo[k]) +
-          " m): lower unresolved.porosity_smoothing_length or make the box longer");
+          " m): lower unresolved.porosity_smoothing_length (or porosity_smoothing_diameters) or "
+          "make the box longer");
   check_grain_diameter(dem);
   for (const auto& a : dem.atoms) {
     if (!maps(a)) continue;
@@ -113,7 +117,7 @@ void UnresolvedCoupling<Dim>::before_fluid_step(const DemState& dem,
   owner_.resize(grains_.size());
   for (std::size_t g = 0; g < owner_.size(); ++g) owner_[g] = g;
   const auto& dom = solver.domain();
-  const double reach = map_.support();
+  const double reach = map_.support(grains_);
   for (int k = 0; k < Dim; ++k) {
     if (!dom.periodic[k]) continue;
     const double L = dom.hi[k] - dom.lo[k];
@@ -190,8 +194,9 @@ void UnresolvedCoupling<Dim>::correct_for_self_induced_velocity(
     const double background = g[Dim + 2] > 0.0 ? g[Dim + 1] / g[Dim + 2] : 0.0;
     const double screening =
         background > 0.0 ? std::sqrt(mu / background) : std::numeric_limits<double>::infinity();
+    const double h = map_.smoothing_length_of(grains_[k].radius);
     const double s =
-        g[0] * self_induced_->inverse_radius(slip.norm(), screening) / (6.0 * M_PI * mu);
+        g[0] * self_induced_->inverse_radius(slip.norm(), screening, h) / (6.0 * M_PI * mu);
     balance_.max_self_induced = std::max(balance_.max_self_induced, s);
     if (s > kCap) ++balance_.self_induced_capped;
     factor[k] = 1.0 / (1.0 - std::min(s, kCap));

@@ -70,8 +70,9 @@ TEST(SettlingSphere, ResolvedErrorFallsWithDOverDxAndUnresolvedGrowsWithIt) {
 // Issue 50, item 2: with each grain's drag formed from the velocity less its own reaction's
 // disturbance (unresolved.self_induced_correction), the lone sphere settles within 5% of
 // Hasimoto from d/dx = 0.5 to 2, the porosity kernel at 1.3 dx up to d/dx = 0.5 and about
-// twice the grain beyond (its own porosity dip, 1 - eps = 0.05 at 1.3 dx and d = dx, would
-// otherwise hinder it as Wen & Yu hinder a suspension). Over 1 s, at the coupling's step
+// twice the grain beyond (porosity_smoothing_diameters = 2 at d/dx = 1; h_p = 1.5 d at 2, where
+// 2 d would reach the 8 mm box's length) (its own porosity dip, 1 - eps = 0.05 at 1.3 dx and d =
+// dx, would otherwise hinder it as Wen & Yu hinder a suspension). Over 1 s, at the coupling's step
 // of 1 ms (the disturbance takes box^2 / nu, 2.6 s at d/dx = 1, to fill the box; the last 0.4 s
 // read within 0.5% of their 4 s value). Measured: +0.5% at d/dx = 0.5, -2.9% at 1 (h = 2 d),
 // -3.5% at 2 (h = 1.5 d); without the correction +23%, +29%, +47% (steady).
@@ -85,7 +86,8 @@ TEST(SettlingSphere, UnresolvedWithItsOwnDisturbanceRemovedSettlesAtHasimotosSpe
       dir, "base = \"" + std::string(ISPHDEM_SOURCE_DIR) +
                "/examples/settling_sphere_3d/case.toml\"\n[set]\n\"time.end\" = 1.0\n" +
                point("corrected_d0.5dx", "unresolved", 0.004, 1e-3, 0.032, on) +
-               point("corrected_d1dx", "unresolved", 0.002, 1e-3, 0.016, on + h(0.004)) +
+               point("corrected_d1dx", "unresolved", 0.002, 1e-3, 0.016,
+                     on + "\"unresolved.porosity_smoothing_diameters\" = 2, ") +
                point("corrected_d2dx", "unresolved", 0.001, 1e-3, 0.008, on + h(0.003)) +
                point("plain_d1dx", "unresolved", 0.002, 1e-3, 0.016, h(0.004)));
   ASSERT_EQ(by_name.size(), 4u);

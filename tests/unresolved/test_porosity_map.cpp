@@ -3,6 +3,7 @@
 // brute-force search; the local Sauter mean diameter of graded grains.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -264,6 +265,56 @@ TEST(PorosityMap, LocalDiameterIsTheSauterMean) {
       EXPECT_EQ(same.diameter[a], 0.8e-3);
     }
   }
+}
+
+// porosity_smoothing_diameters: a grain's kernel widens to that many of its diameters where
+// this is wider than h_p, so a grain of d = dx spreads its volume (whole: the lattice sum of its
+// solid is its volume) over 2 d, not 1.3 dx; grains that it leaves at h_p map bit for bit as
+// without it.
+TEST(PorosityMap, KernelWidensWithTheGrainWhereAsked) {
+  const double dx = 0.4e-3, h_p = 1.3e-3;
+  PorosityMapSettings set;
+  set.smoothing_length = h_p;
+  PorosityMapSettings wide = set;
+  wide.smoothing_diameters = 2.0;
+  std::vector<Grain<3>> grains(2);
+  grains[0].x = Vec<3>(9e-3, 9e-3, 9e-3), grains[0].radius = 1e-3;     // 2 d = 4 mm > h_p
+  grains[1].x = Vec<3>(24e-3, 9e-3, 9e-3), grains[1].radius = 0.3e-3;  // 2 d = 1.2 mm < h_p
+  std::vector<Vec<3>> x;
+  for (double a = 0; a < 30e-3; a += dx)
+    for (double b = 0; b < 18e-3; b += dx)
+      for (double c = 0; c < 18e-3; c += dx) x.emplace_back(a, b, c);
+  const auto narrow = PorosityMap<3>(set).compute(x, grains);
+  const PorosityMap<3> map(wide);
+  const auto field = map.compute(x, grains);
+  EXPECT_DOUBLE_EQ(map.smoothing_length_of(1e-3), 4e-3);
+  EXPECT_DOUBLE_EQ(map.smoothing_length_of(0.3e-3), h_p);
+  EXPECT_DOUBLE_EQ(map.support(grains), 8e-3);
+  double solid = 0.0, reach = 0.0;
+  std::size_t same = 0, small = 0;
+  for (std::size_t a = 0; a < x.size(); ++a) {
+    const double r0 = (x[a] - grains[0].x).norm(), r1 = (x[a] - grains[1].x).norm();
+    if (r0 < 8e-3) {
+      solid += (1.0 - field.porosity[a]) * dx * dx * dx;
+      if (field.porosity[a] < 1.0) reach = std::max(reach, r0);
+    } else if (r1 < 2.6e-3) {  // the small grain alone: as with the common kernel
+      ++small;
+      same += field.porosity[a] == narrow.porosity[a];
+    }
+  }
+  std::printf("large grain: solid %.6e m3 against %.6e, reaching %.2f mm\n", solid,
+              grains[0].volume(), 1e3 * reach);
+  EXPECT_NEAR(solid / grains[0].volume(), 1.0, 1e-3);
+  EXPECT_GT(reach, 7e-3);  // beyond 2 h_p = 2.6 mm: the widened kernel
+  EXPECT_GT(small, 0u);
+  EXPECT_EQ(same, small);
+  // The deepest porosity dip of the large grain is (1.3 dx / 2 d)^3 of the common kernel's.
+  const double dip_wide = 1.0 - *std::min_element(field.porosity.begin(), field.porosity.end());
+  double dip_narrow = 0.0;
+  for (std::size_t a = 0; a < x.size(); ++a)
+    if ((x[a] - grains[0].x).norm() < 1e-3)
+      dip_narrow = std::max(dip_narrow, 1.0 - narrow.porosity[a]);
+  EXPECT_NEAR(dip_wide / dip_narrow, std::pow(h_p / 4e-3, 3), 0.01);
 }
 
 }  // namespace

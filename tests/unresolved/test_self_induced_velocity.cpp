@@ -36,22 +36,24 @@ double real_space_mean(isph::KernelType type, double h, Shell shell) {
 TEST(SelfInducedVelocity, StokesLimitIsTheKernelsMeanInverseDistance) {
   for (const auto type : {isph::KernelType::WendlandC2, isph::KernelType::CubicSpline}) {
     const double h = 1.3e-3;
-    const SelfInducedVelocity si(type, h, 1e-6);
+    const SelfInducedVelocity si(type, 1e-6);
     const double expected =
         real_space_mean(type, h, [](double a, double b) { return 1.0 / std::max(a, b); });
     std::printf("%s: I h = %.5f, real space %.5f\n", isph::kernel_name(type).c_str(),
-                si.stokes_inverse_radius() * h, expected * h);
-    EXPECT_NEAR(si.stokes_inverse_radius() / expected, 1.0, 1e-3);
-    EXPECT_NEAR(si.inverse_radius(0.0, kInf) / expected, 1.0, 1e-3);
+                si.stokes_inverse_radius(h) * h, expected * h);
+    EXPECT_NEAR(si.stokes_inverse_radius(h) / expected, 1.0, 1e-3);
+    EXPECT_NEAR(si.inverse_radius(0.0, kInf, h) / expected, 1.0, 1e-3);
+    // One table serves every width: I scales as 1 / h.
+    EXPECT_NEAR(si.stokes_inverse_radius(3.0 * h) * 3.0, si.stokes_inverse_radius(h), 1e-12 / h);
   }
   // 0.826 / dx at h = 1.3 dx for the Wendland kernel (docs/unresolved.md).
-  const SelfInducedVelocity w(isph::KernelType::WendlandC2, 1.3, 1.0);
-  EXPECT_NEAR(w.stokes_inverse_radius(), 0.826, 0.001);
+  const SelfInducedVelocity w(isph::KernelType::WendlandC2, 1.0);
+  EXPECT_NEAR(w.stokes_inverse_radius(1.3), 0.826, 0.001);
 }
 
 TEST(SelfInducedVelocity, ScreenedByTheOthersResistanceAsABrinkmanFluid) {
   const double h = 2e-3;
-  const SelfInducedVelocity si(isph::KernelType::WendlandC2, h, 1e-4);
+  const SelfInducedVelocity si(isph::KernelType::WendlandC2, 1e-4);
   // Screening lengths off the table's nodes, from far above h to well below it.
   for (const double L : {37.0 * h, 3.3 * h, 0.71 * h, 0.13 * h}) {
     const double expected =
@@ -59,7 +61,7 @@ TEST(SelfInducedVelocity, ScreenedByTheOthersResistanceAsABrinkmanFluid) {
           const double lo = std::min(a, b), hi = std::max(a, b);
           return std::exp(-hi / L) * std::sinh(lo / L) * L / (a * b);
         });
-    const double got = si.inverse_radius(0.0, L);
+    const double got = si.inverse_radius(0.0, L, h);
     std::printf("L/h = %5.2f: I h = %.5f, real space %.5f\n", L / h, got * h, expected * h);
     EXPECT_NEAR(got / expected, 1.0, 0.01) << "L/h = " << L / h;
   }
@@ -67,25 +69,26 @@ TEST(SelfInducedVelocity, ScreenedByTheOthersResistanceAsABrinkmanFluid) {
 
 TEST(SelfInducedVelocity, SweptDownstreamByTheSlipAsAnOseenFluid) {
   const double h = 1e-3, nu = 1e-6;
-  const SelfInducedVelocity si(isph::KernelType::WendlandC2, h, nu);
-  double before = si.stokes_inverse_radius();
+  const SelfInducedVelocity si(isph::KernelType::WendlandC2, nu);
+  double before = si.stokes_inverse_radius(h);
   for (const double re : {0.1, 1.0, 10.0, 100.0}) {
-    const double now = si.inverse_radius(re * nu / h, kInf);
+    const double now = si.inverse_radius(re * nu / h, kInf, h);
     EXPECT_LT(now, before) << "U h / nu = " << re;
     before = now;
   }
   // Far downstream of Stokes the regularised Oseenlet's mean falls as nu / (U h): g(a) -> pi / a.
-  const double a = si.inverse_radius(200.0 * nu / h, kInf),
-               b = si.inverse_radius(800.0 * nu / h, kInf);
+  const double a = si.inverse_radius(200.0 * nu / h, kInf, h),
+               b = si.inverse_radius(800.0 * nu / h, kInf, h);
   EXPECT_NEAR(a / b, 4.0, 0.2);
   // Screening and slip together weaken it further than either.
-  EXPECT_LT(si.inverse_radius(10.0 * nu / h, h), si.inverse_radius(10.0 * nu / h, kInf));
-  EXPECT_LT(si.inverse_radius(10.0 * nu / h, h), si.inverse_radius(0.0, h));
+  EXPECT_LT(si.inverse_radius(10.0 * nu / h, h, h), si.inverse_radius(10.0 * nu / h, kInf, h));
+  EXPECT_LT(si.inverse_radius(10.0 * nu / h, h, h), si.inverse_radius(0.0, h, h));
 }
 
 TEST(SelfInducedVelocity, RejectsANonPositiveLengthOrViscosity) {
-  EXPECT_THROW(SelfInducedVelocity(isph::KernelType::WendlandC2, 0.0, 1e-6), std::invalid_argument);
-  EXPECT_THROW(SelfInducedVelocity(isph::KernelType::WendlandC2, 1e-3, 0.0), std::invalid_argument);
+  EXPECT_THROW(SelfInducedVelocity(isph::KernelType::WendlandC2, 0.0), std::invalid_argument);
+  const SelfInducedVelocity si(isph::KernelType::WendlandC2, 1e-6);
+  EXPECT_THROW(si.inverse_radius(0.0, kInf, 0.0), std::invalid_argument);
 }
 
 }  // namespace
