@@ -10,7 +10,7 @@
 // resistance around it (infinite for a lone grain), and g(a) = int_-1^1 (1 - c^2)/(1 + a^2 c^2) dc
 // the Oseen factor of the slip U at a = U q / (nu (q^2 + L^-2)): the regularised Stokeslet,
 // screened and advected, as Evrard, Denner & van Wachem (2020) and Chandran, Evrard & van Wachem
-// (2025) form it for grid codes. In the Stokes limit I is 1 / <1/|x - y|> over two independent
+// (2025) form it for grid codes. In the Stokes limit I is <1/|x - y|> over two independent
 // draws from W: 0.826 / dx for the Wendland C2 kernel at h = 1.3 dx. Drag laws for a lone sphere
 // are written for the velocity without that disturbance; the coupling recovers it.
 //

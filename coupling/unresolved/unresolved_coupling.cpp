@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -157,9 +158,12 @@ void UnresolvedCoupling<Dim>::correct_for_self_induced_velocity(
   const auto& w = field_.weights;
   const std::size_t n = grains_.size();
   // Per grain: B = sum share eps rho V K, the drag per unit slip the law gives it; B times the
-  // slip it samples; and the others' resistance per unit volume around it, kernel-weighted, for
-  // the Brinkman screening length sqrt(mu / b).
-  std::vector<double> sums(n * (Dim + 3), 0.0);
+  // slip it samples, and times 1/eps (the fluid carries Darcy velocities: a disturbance u_D in
+  // them is u_D / eps in the interstitial slip); and the others' resistance on the Darcy
+  // velocity, rho K per unit volume, kernel-weighted, for the Brinkman screening length
+  // sqrt(mu / b). A grain's periodic images are the grain itself, not others.
+  constexpr int kSums = Dim + 4;
+  std::vector<double> sums(n * kSums, 0.0);
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const std::size_t i = rows[r];
     const double eps = P.porosity[i];
@@ -170,24 +174,29 @@ void UnresolvedCoupling<Dim>::correct_for_self_induced_velocity(
     const isph::Vec<Dim> slip = P.v[i] / eps - P.solid_velocity[i];
     for (std::size_t e = w.offset[r]; e < w.offset[r + 1]; ++e) {
       const double share = w.surface[e] / surface;
-      double* g = &sums[w.grain[e] * (Dim + 3)];
+      double own = 0.0;  // this grain's share through all its entries (itself and its images)
+      for (std::size_t f = w.offset[r]; f < w.offset[r + 1]; ++f)
+        if (owner_[w.grain[f]] == owner_[w.grain[e]]) own += w.surface[f];
+      own /= surface;
+      double* g = &sums[w.grain[e] * kSums];
       g[0] += share * b * P.volume;
       for (int a = 0; a < Dim; ++a) g[1 + a] += share * b * P.volume * slip[a];
-      g[Dim + 1] += w.weight[e] * b * (1.0 - share);
+      g[Dim + 1] += w.weight[e] * rho * P.resistance[i] * std::max(0.0, 1.0 - own);
       g[Dim + 2] += w.weight[e];
+      g[Dim + 3] += share * b * P.volume / eps;
     }
   }
   if (const isph::RowShare* ranks = solver.decomposition())
     if (!sums.empty()) ranks->sum_in_place(sums.data(), sums.size());
   for (std::size_t k = 0; k < n; ++k)  // images into their grain
     if (owner_[k] != k)
-      for (int a = 0; a < Dim + 3; ++a) sums[owner_[k] * (Dim + 3) + a] += sums[k * (Dim + 3) + a];
+      for (int a = 0; a < kSums; ++a) sums[owner_[k] * kSums + a] += sums[k * kSums + a];
   std::vector<double> factor(n, 1.0);
   balance_.max_self_induced = 0.0;
   balance_.self_induced_capped = 0;
   for (std::size_t k = 0; k < n; ++k) {
     if (owner_[k] != k) continue;
-    const double* g = &sums[k * (Dim + 3)];
+    const double* g = &sums[k * kSums];
     if (!(g[0] > 0.0)) continue;
     isph::Vec<Dim> slip;
     for (int a = 0; a < Dim; ++a) slip[a] = g[1 + a] / g[0];
@@ -195,10 +204,20 @@ void UnresolvedCoupling<Dim>::correct_for_self_induced_velocity(
     const double screening =
         background > 0.0 ? std::sqrt(mu / background) : std::numeric_limits<double>::infinity();
     const double h = map_.smoothing_length_of(grains_[k].radius);
-    const double s =
-        g[0] * self_induced_->inverse_radius(slip.norm(), screening, h) / (6.0 * M_PI * mu);
+    const double s = g[0] * self_induced_->inverse_radius(slip.norm(), screening, h) *
+                     (g[Dim + 3] / g[0]) / (6.0 * M_PI * mu);
     balance_.max_self_induced = std::max(balance_.max_self_induced, s);
-    if (s > kCap) ++balance_.self_induced_capped;
+    if (s > kCap) {
+      ++balance_.self_induced_capped;
+      if (!warned_cap_) {
+        warned_cap_ = true;
+        std::cerr << "unresolved: grain " << grains_[k].tag << "'s own disturbance is "
+                  << isph::format_number(s, 3)
+                  << " of its slip, above the correction's cap of 0.8 (its drag is raised at most "
+                     "5x): the grain is not small against its porosity kernel; widen it with "
+                     "unresolved.porosity_smoothing_diameters (told once)\n";
+      }
+    }
     factor[k] = 1.0 / (1.0 - std::min(s, kCap));
   }
   for (std::size_t k = 0; k < n; ++k) factor[k] = factor[owner_[k]];

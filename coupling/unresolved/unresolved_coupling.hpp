@@ -83,6 +83,7 @@ class UnresolvedCoupling final : public CouplingStage<Dim> {
   std::vector<std::int64_t> mapped_ids_;  // particle id of each row of field_ (pre-step order)
   UnresolvedBalance<Dim> balance_;
   std::unique_ptr<SelfInducedVelocity> self_induced_;  // with self_induced_correction only
+  bool warned_cap_ = false;
 };
 
 }  // namespace isphdem
