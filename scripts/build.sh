@@ -17,8 +17,11 @@ while [ $# -gt 0 ]; do
   args+=("$1"); shift
 done
 cmake -S "$root" -B "$build" "${config[@]}" "${args[@]}" >/dev/null
+# nproc reads OMP_NUM_THREADS too, and scripts/test.sh sets it to 1 before the sanitized build:
+# ask for the cores without it (that build had run on one core).
+cores="$(env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc)"
 if [ ${#targets[@]} -gt 0 ]; then
-  cmake --build "$build" -j "$(nproc)" --target "${targets[@]}"
+  cmake --build "$build" -j "$cores" --target "${targets[@]}"
 else
-  cmake --build "$build" -j "$(nproc)"
+  cmake --build "$build" -j "$cores"
 fi
