@@ -45,11 +45,8 @@ std::unique_ptr<UnresolvedCoupling<Dim>> make_unresolved_coupling(const CaseFile
                     "it (water: 1e-6)");
   p.kinematic_viscosity = viscosity;
   s.kinematic_viscosity = viscosity;
+  // UnresolvedCoupling refuses it in 2D; the catch below names the table.
   s.self_induced_correction = c.boolean("unresolved.self_induced_correction", false);
-  if (Dim == 2 && s.self_induced_correction)
-    throw CaseError(
-        "'unresolved.self_induced_correction' is for 3D cases: in a 2D fluid a grain's own "
-        "disturbance has no finite Stokes limit; remove the key");
   p.alpha = c.positive("unresolved.alpha", p.alpha);
   p.beta = c.positive("unresolved.beta", p.beta);
   p.blend = c.boolean("unresolved.blend", p.blend);

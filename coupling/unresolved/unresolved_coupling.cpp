@@ -164,27 +164,31 @@ void UnresolvedCoupling<Dim>::correct_for_self_induced_velocity(
   // sqrt(mu / b). A grain's periodic images are the grain itself, not others.
   constexpr int kSums = Dim + 4;
   std::vector<double> sums(n * kSums, 0.0);
+  // A grain's share of a row through all its entries (itself and its periodic images), summed
+  // per owner into `own` for the row and cleared after it.
+  std::vector<double> own(n, 0.0);
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const std::size_t i = rows[r];
     const double eps = P.porosity[i];
     if (!(eps < 1.0)) continue;
     double surface = 0.0;
-    for (std::size_t e = w.offset[r]; e < w.offset[r + 1]; ++e) surface += w.surface[e];
+    for (std::size_t e = w.offset[r]; e < w.offset[r + 1]; ++e) {
+      surface += w.surface[e];
+      own[owner_[w.grain[e]]] += w.surface[e];
+    }
     const double b = eps * rho * P.resistance[i];
     const isph::Vec<Dim> slip = P.v[i] / eps - P.solid_velocity[i];
     for (std::size_t e = w.offset[r]; e < w.offset[r + 1]; ++e) {
       const double share = w.surface[e] / surface;
-      double own = 0.0;  // this grain's share through all its entries (itself and its images)
-      for (std::size_t f = w.offset[r]; f < w.offset[r + 1]; ++f)
-        if (owner_[w.grain[f]] == owner_[w.grain[e]]) own += w.surface[f];
-      own /= surface;
+      const double others = std::max(0.0, 1.0 - own[owner_[w.grain[e]]] / surface);
       double* g = &sums[w.grain[e] * kSums];
       g[0] += share * b * P.volume;
       for (int a = 0; a < Dim; ++a) g[1 + a] += share * b * P.volume * slip[a];
-      g[Dim + 1] += w.weight[e] * rho * P.resistance[i] * std::max(0.0, 1.0 - own);
+      g[Dim + 1] += w.weight[e] * rho * P.resistance[i] * others;
       g[Dim + 2] += w.weight[e];
       g[Dim + 3] += share * b * P.volume / eps;
     }
+    for (std::size_t e = w.offset[r]; e < w.offset[r + 1]; ++e) own[owner_[w.grain[e]]] = 0.0;
   }
   if (const isph::RowShare* ranks = solver.decomposition())
     if (!sums.empty()) ranks->sum_in_place(sums.data(), sums.size());
