@@ -93,6 +93,11 @@ struct IsphConfig {
   bool smagorinsky = false;
   double smagorinsky_constant = 0.1;
   WallSlip wall = WallSlip::NoSlip;
+  // No-slip ghost velocities of walls and PMS solids for the viscous term
+  // (IsphSolver::compute_wall_ghosts): false extrapolates the fluid's velocity linearly through
+  // the surface, true fits u = v_w + a s + b s^2 along the normal (s the height above the
+  // surface), which is exact for the parabolic profile of a narrow gap.
+  bool quadratic_wall_ghosts = false;
   // Closest a fluid particle may come to a wall surface, in spacings (the first fluid layer sits
   // at 0.5).
   double min_wall_distance = 0.25;
@@ -255,6 +260,8 @@ class IsphSolver {
   void confine_surface_to_remeshed_rows();
   void compute_operator_weights();  // step_neighbors.cpp
   void compute_wall_ghosts();       // step_predictor.cpp
+  void fit_ghost_profiles();        // step_predictor.cpp
+  bool ghost_profile(int i, Vec<Dim>& slope, Vec<Dim>& curvature) const;
   void compute_eddy_viscosity();
   void predict(double dt);
   void set_wall_u_star(double dt);
@@ -319,6 +326,10 @@ class IsphSolver {
   std::vector<Vec<Dim>> grad_p_;       // decomposed: the owned rows' grad p of the last step
   double max_eddy_viscosity_ = 0.0;
   std::vector<Vec<Dim>> u_star_, wall_ghost_, shift_;
+  // Quadratic ghosts: per wall or solid row the fitted slope and curvature of the fluid's velocity
+  // along its normal, and whether its own fluid neighbours determined them (1) or not (0).
+  std::vector<Vec<Dim>> ghost_slope_, ghost_curvature_;
+  std::vector<double> ghost_fitted_;
   std::vector<Vec<Dim>> pms_u_star_;       // PMS rows: the plain predictor's u*, for their force
   std::vector<Vec<Dim>> surface_columns_;  // the lattice surface_remesh_rows remeshes onto
   bool remeshes() const { return config_.surface_remesh_rows > 0; }

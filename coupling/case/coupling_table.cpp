@@ -8,6 +8,7 @@ std::vector<std::string> coupling_keys() {
           "coupling.pms_shape",
           "coupling.pms_volume",
           "coupling.pms_overlap",
+          "coupling.pms_surface",
           "coupling.auto.resolve_above",
           "coupling.auto.unresolve_below"};
 }

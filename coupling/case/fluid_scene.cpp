@@ -35,6 +35,7 @@ std::vector<std::string> fluid_scene_keys() {
           "solver.min_wall_distance",
           "solver.pocket_solid_fraction",
           "solver.pms_projection",
+          "solver.wall_ghosts",
           "solver.density_relaxation_time",
           "solver.free_surface",
           "solver.spread_pin",
@@ -258,6 +259,13 @@ FluidScene<Dim> build_fluid_scene(const CaseFile& c, int part, int parts) {
         "velocity through a steady projection) or \"fluid\" (they are projected as "
         "fluid, the code before 2026-12-06)");
   cfg.pms_pressure_increment = pms_projection == "increment";
+  const std::string ghosts = c.string("solver.wall_ghosts", "linear");
+  if (ghosts != "linear" && ghosts != "quadratic")
+    throw CaseError(
+        "'solver.wall_ghosts' must be \"linear\" (the fluid's velocity extrapolated linearly "
+        "through walls and PMS surfaces) or \"quadratic\" (a parabola fitted along the normal, "
+        "for gaps a few spacings wide)");
+  cfg.quadratic_wall_ghosts = ghosts == "quadratic";
   cfg.density_relaxation_time =
       c.number("solver.density_relaxation_time", cfg.density_relaxation_time);
   if (cfg.density_relaxation_time < 0.0)

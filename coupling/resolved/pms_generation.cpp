@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -230,6 +231,83 @@ std::vector<isph::Vec<Dim>> generate_pms_particles(const DemBody& body,
   return out;
 }
 
+namespace {
+
+// The depth level whose set {depth_in >= level} holds `target` (area in 2D, volume in 3D),
+// counted on a grid of dx/8 (2D) or dx/4 (3D) cells over the members' box widened by their
+// largest radius (a dilated section reaches beyond the spheres).
+template <int Dim>
+double volume_level(const std::vector<Sphere>& spheres, double target, double dx) {
+  using V = isph::Vec<Dim>;
+  const double cell = dx / (Dim == 2 ? 8.0 : 4.0);
+  V lo = V::Constant(std::numeric_limits<double>::max()), hi = -lo;
+  double r_max = 0.0;
+  for (const auto& s : spheres) {
+    lo = lo.cwiseMin(in_plane<Dim>(s.c) - V::Constant(s.r));
+    hi = hi.cwiseMax(in_plane<Dim>(s.c) + V::Constant(s.r));
+    r_max = std::max(r_max, s.r);
+  }
+  lo -= V::Constant(r_max);
+  hi += V::Constant(r_max);
+  Eigen::Matrix<long, Dim, 1> count;
+  for (int a = 0; a < Dim; ++a) count[a] = static_cast<long>(std::ceil((hi[a] - lo[a]) / cell));
+  std::vector<double> depth;
+  Eigen::Matrix<long, Dim, 1> k = Eigen::Matrix<long, Dim, 1>::Zero();
+  while (true) {
+    V p;
+    for (int a = 0; a < Dim; ++a) p[a] = lo[a] + (static_cast<double>(k[a]) + 0.5) * cell;
+    depth.push_back(depth_in<Dim>(spheres, p));
+    int a = 0;
+    while (a < Dim && ++k[a] >= count[a]) {
+      k[a] = 0;
+      ++a;
+    }
+    if (a == Dim) break;
+  }
+  const std::size_t n = static_cast<std::size_t>(std::llround(target / std::pow(cell, Dim)));
+  if (n == 0 || n > depth.size()) return 0.0;
+  std::nth_element(depth.begin(), depth.begin() + (n - 1), depth.end(), std::greater<double>());
+  return depth[n - 1];
+}
+
+}  // namespace
+
+template <int Dim>
+std::vector<PmsSurfacePoint<Dim>> pms_surface_from_spheres(const DemBody& body,
+                                                           const std::vector<DemAtom>& members,
+                                                           const PmsGenerationSettings& settings,
+                                                           const isph::Domain<Dim>& domain,
+                                                           const std::vector<isph::Vec<Dim>>& x) {
+  using V = isph::Vec<Dim>;
+  const std::vector<Sphere> spheres = member_sections<Dim>(body, members);
+  double level = 0.0;
+  if (settings.shape != PmsShape::Outline && body.volume > 0.0)
+    level = volume_level<Dim>(spheres, body.volume / (Dim == 2 ? settings.slab_thickness : 1.0),
+                              settings.spacing);
+  std::vector<PmsSurfacePoint<Dim>> out(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    double nearest = std::numeric_limits<double>::max();
+    for (const auto& s : spheres) {
+      const double radius = s.r - level;
+      if (radius <= 0.0) continue;
+      const V r = domain.min_image(x[i] - in_plane<Dim>(s.c));
+      const double dist = r.norm();
+      if (dist == 0.0) continue;
+      const V n = r / dist;
+      // The point of this member's surface on the radius through x; covered by another member,
+      // it is not the body's surface.
+      const V surface = in_plane<Dim>(s.c) + radius * n;
+      if (depth_in<Dim>(spheres, surface, domain) > level + 1e-9 * radius) continue;
+      const double depth = radius - dist;
+      if (std::abs(depth) < nearest) {
+        nearest = std::abs(depth);
+        out[i] = {depth, n, true};
+      }
+    }
+  }
+  return out;
+}
+
 template <int Dim>
 std::size_t remove_shared_pms_nodes(std::vector<std::vector<isph::Vec<Dim>>>& particles,
                                     const std::vector<DemBody>& bodies,
@@ -316,5 +394,11 @@ template std::vector<isph::Vec<3>> generate_pms_particles<3>(const DemBody&,
                                                              const std::vector<DemAtom>&,
                                                              const PmsGenerationSettings&,
                                                              const isph::Vec<3>&);
+template std::vector<PmsSurfacePoint<2>> pms_surface_from_spheres<2>(
+    const DemBody&, const std::vector<DemAtom>&, const PmsGenerationSettings&,
+    const isph::Domain<2>&, const std::vector<isph::Vec<2>>&);
+template std::vector<PmsSurfacePoint<3>> pms_surface_from_spheres<3>(
+    const DemBody&, const std::vector<DemAtom>&, const PmsGenerationSettings&,
+    const isph::Domain<3>&, const std::vector<isph::Vec<3>>&);
 
 }  // namespace isphdem

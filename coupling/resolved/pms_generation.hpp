@@ -80,6 +80,31 @@ std::size_t remove_shared_pms_nodes(std::vector<std::vector<isph::Vec<Dim>>>& pa
                                     const std::vector<std::vector<DemAtom>>& members,
                                     const isph::Domain<Dim>& domain, double spacing);
 
+// Where a PMS particle lies under the body's surface: its depth below it (m) and the outward
+// normal there, in space coordinates.
+template <int Dim>
+struct PmsSurfacePoint {
+  double depth = 0.0;
+  isph::Vec<Dim> normal = isph::Vec<Dim>::Zero();
+  bool found = false;  // false: no exposed member surface is nearer than the others (a crease)
+};
+
+// The body's surface as its member spheres give it (coupling.pms_surface = "spheres"), for the
+// no-slip ghosts of the viscous term, instead of the lattice staircase (add_rigid_body's depth
+// from the nearest free lattice node: 0.5 dx for every outer particle, whatever the curvature).
+// A volume-matched lattice body stands for the level set of the members' depth that encloses
+// the DEM volume (2D: the section of area V/T, the members' circles eroded or dilated uniformly,
+// see the top of this file); an outline body for the spheres themselves. Each particle's surface
+// point is the nearest of the members' (eroded) surfaces along the radius through it that no
+// other member covers; its depth and normal are that sphere's. Periodic separations by
+// `domain`'s minimum image.
+template <int Dim>
+std::vector<PmsSurfacePoint<Dim>> pms_surface_from_spheres(const DemBody& body,
+                                                           const std::vector<DemAtom>& members,
+                                                           const PmsGenerationSettings& settings,
+                                                           const isph::Domain<Dim>& domain,
+                                                           const std::vector<isph::Vec<Dim>>& x);
+
 // The solid volume the fluid sees for n PMS particles: n dx^3, or n dx^2 T in 2D.
 template <int Dim>
 double pms_volume(std::size_t n, const PmsGenerationSettings& settings);

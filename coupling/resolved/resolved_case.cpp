@@ -23,6 +23,12 @@ std::unique_ptr<ResolvedCoupling<Dim>> make_resolved_coupling(const CaseFile& c,
     throw CaseError("'coupling.pms_volume' must be \"dem\" or \"particles\"");
   s.dem_volume = volume == "dem";
   s.overlap = c.positive("coupling.pms_overlap", s.overlap);
+  const std::string surface = c.string("coupling.pms_surface", "lattice");
+  if (surface != "lattice" && surface != "spheres")
+    throw CaseError(
+        "'coupling.pms_surface' must be \"lattice\" (the surface half a spacing beyond the outer "
+        "PMS particles) or \"spheres\" (the members' spheres, for the no-slip ghosts)");
+  s.surface_from_spheres = surface == "spheres";
   s.free_spheres = coupling_model(c) == "resolved";
   return std::make_unique<ResolvedCoupling<Dim>>(s);
 }

@@ -38,6 +38,11 @@ struct ResolvedSettings {
   // lattice can only match V_b to half a particle, and a per-sphere clump not at all. Off: each
   // particle stands for dx^Dim (x T). (coupling.pms_volume = "dem" | "particles")
   bool dem_volume = true;
+  // The depth and normal of each PMS particle under the body's surface, which place the no-slip
+  // condition of the viscous term: from the lattice (half a spacing beyond the outer particles,
+  // a staircase on curved bodies) or, true, from the member spheres (pms_surface_from_spheres).
+  // (coupling.pms_surface = "lattice" | "spheres")
+  bool surface_from_spheres = false;
   // Free spheres (fines) resolved too, each a rigid body of its own whose loads go to its atom
   // (force and torque by tag); off, only multisphere clumps are resolved. (coupling.model =
   // "resolved" turns it on.)

@@ -58,6 +58,60 @@ TEST(PmsGeneration, LatticeCountMatchesDemVolumeIn2DAnd3D) {
   EXPECT_LT((c3 - isph::Vec<3>(b.x[0], b.x[1], b.x[2])).norm(), 0.02 * dx);
 }
 
+// coupling.pms_surface = "spheres": the depth and normal of each particle from the member spheres.
+// A lone sphere in 3D: depth r - |x - c| and the radial normal (the level that encloses the DEM
+// volume is the sphere itself, to the sampling's resolution). In a 2D slab thinner than 4r/3 the
+// section is the circle dilated to the area V/T: radius r sqrt(4r / 3T).
+TEST(PmsGeneration, SurfaceFromSpheresIsTheSphereOrItsEquivalentSection) {
+  const double dx = 0.001, r = 0.004;
+  const DemState s = clump({Vec3{0.0203, 0.0197, 0.0201}}, r, 2600);
+  const DemBody& b = s.bodies[0];
+  PmsGenerationSettings g{dx, 0.0, PmsShape::Lattice};
+  const isph::Vec<3> c3(b.x[0], b.x[1], b.x[2]);
+  const auto x3 = generate_pms_particles<3>(b, s.atoms, g, isph::Vec<3>(0.0005, 0.0005, 0.0005));
+  const auto p3 = pms_surface_from_spheres<3>(b, s.atoms, g, isph::Domain<3>{}, x3);
+  double worst_depth = 0.0, worst_normal = 0.0;
+  for (std::size_t k = 0; k < x3.size(); ++k) {
+    ASSERT_TRUE(p3[k].found);
+    const isph::Vec<3> d = x3[k] - c3;
+    worst_depth = std::max(worst_depth, std::abs(p3[k].depth - (r - d.norm())));
+    if (d.norm() > 0.1 * dx)
+      worst_normal = std::max(worst_normal, (p3[k].normal - d.normalized()).norm());
+  }
+  std::printf("3D sphere r = 4 dx, %zu particles: depth off by %.3e dx, normal by %.1e\n",
+              x3.size(), worst_depth / dx, worst_normal);
+  EXPECT_LT(worst_depth, 0.05 * dx);
+  EXPECT_LT(worst_normal, 1e-9);
+
+  g.slab_thickness = r;  // T = r < 4r/3: the section is dilated
+  const auto x2 = generate_pms_particles<2>(b, s.atoms, g, isph::Vec<2>(0.0005, 0.0005));
+  const auto p2 = pms_surface_from_spheres<2>(b, s.atoms, g, isph::Domain<2>{}, x2);
+  const double r_eq = r * std::sqrt(4.0 * r / (3.0 * g.slab_thickness));
+  worst_depth = 0.0;
+  for (std::size_t k = 0; k < x2.size(); ++k)
+    worst_depth = std::max(
+        worst_depth, std::abs(p2[k].depth - (r_eq - (x2[k] - isph::Vec<2>(c3[0], c3[1])).norm())));
+  std::printf("2D section, T = r: equivalent radius %.4f dx, depth off by %.3e dx\n", r_eq / dx,
+              worst_depth / dx);
+  EXPECT_LT(worst_depth, 0.05 * dx);
+}
+
+// Two overlapping members: a particle in the neck between them has no exposed member surface
+// along its radii (each is covered by the other sphere) and keeps the lattice's estimate; one
+// on the far side of a member gets that member's surface.
+TEST(PmsGeneration, SurfaceFromSpheresSkipsTheCoveredNeck) {
+  const double dx = 0.001, r = 0.003;
+  const DemState s = clump({Vec3{0.010, 0.010, 0.010}, Vec3{0.014, 0.010, 0.010}}, r, 2600);
+  PmsGenerationSettings g{dx, 0.0, PmsShape::Outline};
+  const std::vector<isph::Vec<3>> x{isph::Vec<3>(0.012, 0.010, 0.010),
+                                    isph::Vec<3>(0.0085, 0.010, 0.010)};
+  const auto p = pms_surface_from_spheres<3>(s.bodies[0], s.atoms, g, isph::Domain<3>{}, x);
+  EXPECT_FALSE(p[0].found);
+  ASSERT_TRUE(p[1].found);
+  EXPECT_NEAR(p[1].depth, r - 0.0015, 1e-12);
+  EXPECT_NEAR(p[1].normal[0], -1.0, 1e-12);
+}
+
 TEST(PmsGeneration, DxWideSpheresGiveOneParticleEach) {
   std::vector<Vec3> c;
   for (int i = 0; i < 5; ++i) c.push_back(Vec3{0.01 + 0.001 * i, 0.02, 0});
