@@ -3,6 +3,7 @@
 // clump built as the DEM would report it, and a rigid-body integrator standing in for LIGGGHTS
 // (DESIGN.md decision 4: quasi-2D bodies move in x-y and rotate about z).
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,24 @@ FluidScene<Dim> example_scene(const std::string& name, const std::vector<std::st
 template <int Dim>
 FluidScene<Dim> tank(const std::vector<std::string>& overrides) {
   return example_scene<Dim>("hydrostatic_2d", overrides);
+}
+
+// --set overrides of taylor_green_2d for a periodic 2D box [0, Lx] x [0, Ly] full of fluid at
+// rest, of viscosity nu, driven by the body force g along x (Stokes arrays, channels).
+inline std::vector<std::string> periodic_box_2d(double Lx, double Ly, double dx, double nu,
+                                                double g) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.9g", nu);
+  const std::string box = "[" + std::to_string(Lx) + "," + std::to_string(Ly) + "]";
+  return {"case.dimension=2",
+          std::string("fluid.viscosity=") + buf,
+          "initial.velocity=\"rest\"",
+          "particles.spacing=" + std::to_string(dx),
+          "domain.min=[0,0]",
+          "domain.max=" + box,
+          "domain.periodic=[true,true]",
+          "fluid.blocks=[{min=[0,0],max=" + box + "}]",
+          "fluid.gravity=[" + std::to_string(g) + ",0]"};
 }
 
 // A clump of equal spheres (centres in space, radius r, density rho_s); members do not overlap,

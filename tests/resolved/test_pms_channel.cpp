@@ -70,17 +70,7 @@ ChannelResult pms_channel(int gap_rows, const std::vector<std::string>& extra = 
   wall_rows = std::max(wall_rows, 8 - gap_rows);
   const int nx = 8, ny = gap_rows + wall_rows;
   const double Lx = nx * dx, Ly = ny * dx;
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", nu);
-  std::vector<std::string> o{"case.dimension=2", std::string("fluid.viscosity=") + buf,
-                             "initial.velocity=\"rest\"",
-                             "particles.spacing=" + std::to_string(dx)};
-  const std::string box = "[" + std::to_string(Lx) + "," + std::to_string(Ly) + "]";
-  o.push_back("domain.min=[0,0]");
-  o.push_back("domain.max=" + box);
-  o.push_back("domain.periodic=[true,true]");
-  o.push_back("fluid.blocks=[{min=[0,0],max=" + box + "}]");
-  o.push_back("fluid.gravity=[" + std::to_string(g) + ",0]");
+  std::vector<std::string> o = periodic_box_2d(Lx, Ly, dx, nu, g);
   for (const auto& e : extra) o.push_back(e);
   auto scene = example_scene<Dim>("taylor_green_2d", o);
   isph::IsphSolver<Dim> solver(scene.config, scene.domain, scene.particles);

@@ -28,17 +28,7 @@ ArrayResult cylinder_array(double L, double dx, double a, double nu, double g, d
                            double t_end, const std::vector<std::string>& extra = {}) {
   constexpr int Dim = 2;
   const double rho = 1000.0, mu = rho * nu;
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", nu);
-  std::vector<std::string> o{"case.dimension=2", std::string("fluid.viscosity=") + buf,
-                             "initial.velocity=\"rest\"",
-                             "particles.spacing=" + std::to_string(dx)};
-  const std::string box = "[" + std::to_string(L) + "," + std::to_string(L) + "]";
-  o.push_back("domain.min=[0,0]");
-  o.push_back("domain.max=" + box);
-  o.push_back("domain.periodic=[true,true]");
-  o.push_back("fluid.blocks=[{min=[0,0],max=" + box + "}]");
-  o.push_back("fluid.gravity=[" + std::to_string(g) + ",0]");
+  std::vector<std::string> o = periodic_box_2d(L, L, dx, nu, g);
   for (const auto& e : extra) o.push_back(e);
   auto scene = example_scene<Dim>("taylor_green_2d", o);
   isph::IsphSolver<Dim> solver(scene.config, scene.domain, scene.particles);
