@@ -62,6 +62,14 @@ double depth_in(const std::vector<Sphere>& spheres, const isph::Vec<Dim>& x,
   return d;
 }
 
+// The shape a body gets: `auto` is per_sphere when every member's section is at most 1.5 dx wide.
+PmsShape decided_shape(const std::vector<Sphere>& sections, PmsShape shape, double dx) {
+  if (shape != PmsShape::Auto) return shape;
+  double max_diameter = 0.0;
+  for (const auto& s : sections) max_diameter = std::max(max_diameter, 2.0 * s.r);
+  return max_diameter <= 1.5 * dx ? PmsShape::PerSphere : PmsShape::Lattice;
+}
+
 }  // namespace
 
 PmsShape pms_shape_from_name(const std::string& name) {
@@ -100,11 +108,7 @@ std::vector<isph::Vec<Dim>> generate_pms_particles(const DemBody& body,
                                 "the plane (fix couple/isph planar z Z0)");
   const V cm = in_plane<Dim>(body.x);
 
-  double max_diameter = 0.0;
-  for (const auto& s : spheres) max_diameter = std::max(max_diameter, 2.0 * s.r);
-  PmsShape shape = settings.shape;
-  if (shape == PmsShape::Auto)
-    shape = max_diameter <= 1.5 * dx ? PmsShape::PerSphere : PmsShape::Lattice;
+  const PmsShape shape = decided_shape(spheres, settings.shape, dx);
   if (shape == PmsShape::PerSphere) {
     std::vector<V> x;
     for (const auto& s : spheres) x.push_back(in_plane<Dim>(s.c));
@@ -234,8 +238,7 @@ std::vector<isph::Vec<Dim>> generate_pms_particles(const DemBody& body,
 namespace {
 
 // The depth level whose set {depth_in >= level} holds `target` (area in 2D, volume in 3D),
-// counted on a grid of dx/8 (2D) or dx/4 (3D) cells over the members' box widened by their
-// largest radius (a dilated section reaches beyond the spheres).
+// counted on a grid of dx/8 (2D) or dx/4 (3D) cells over the members' box.
 template <int Dim>
 double volume_level(const std::vector<Sphere>& spheres, double target, double dx) {
   using V = isph::Vec<Dim>;
@@ -247,25 +250,29 @@ double volume_level(const std::vector<Sphere>& spheres, double target, double dx
     hi = hi.cwiseMax(in_plane<Dim>(s.c) + V::Constant(s.r));
     r_max = std::max(r_max, s.r);
   }
-  lo -= V::Constant(r_max);
-  hi += V::Constant(r_max);
-  Eigen::Matrix<long, Dim, 1> count;
-  for (int a = 0; a < Dim; ++a) count[a] = static_cast<long>(std::ceil((hi[a] - lo[a]) / cell));
-  std::vector<double> depth;
-  Eigen::Matrix<long, Dim, 1> k = Eigen::Matrix<long, Dim, 1>::Zero();
-  while (true) {
-    V p;
-    for (int a = 0; a < Dim; ++a) p[a] = lo[a] + (static_cast<double>(k[a]) + 0.5) * cell;
-    depth.push_back(depth_in<Dim>(spheres, p));
-    int a = 0;
-    while (a < Dim && ++k[a] >= count[a]) {
-      k[a] = 0;
-      ++a;
-    }
-    if (a == Dim) break;
-  }
   const std::size_t n = static_cast<std::size_t>(std::llround(target / std::pow(cell, Dim)));
-  if (n == 0 || n > depth.size()) return 0.0;
+  if (n == 0) return 0.0;
+  std::vector<double> depth;
+  // Widened until the box holds twice the target: a thin slab dilates the section beyond it.
+  for (double margin = r_max; depth.size() < 2 * n; margin *= 2.0) {
+    depth.clear();
+    Eigen::Matrix<long, Dim, 1> count;
+    for (int a = 0; a < Dim; ++a)
+      count[a] = static_cast<long>(std::ceil((hi[a] - lo[a] + 2.0 * margin) / cell));
+    Eigen::Matrix<long, Dim, 1> k = Eigen::Matrix<long, Dim, 1>::Zero();
+    while (true) {
+      V p;
+      for (int a = 0; a < Dim; ++a)
+        p[a] = lo[a] - margin + (static_cast<double>(k[a]) + 0.5) * cell;
+      depth.push_back(depth_in<Dim>(spheres, p));
+      int a = 0;
+      while (a < Dim && ++k[a] >= count[a]) {
+        k[a] = 0;
+        ++a;
+      }
+      if (a == Dim) break;
+    }
+  }
   std::nth_element(depth.begin(), depth.begin() + (n - 1), depth.end(), std::greater<double>());
   return depth[n - 1];
 }
@@ -285,6 +292,9 @@ std::vector<PmsSurfacePoint<Dim>> pms_surface_from_spheres(const DemBody& body,
     level = volume_level<Dim>(spheres, body.volume / (Dim == 2 ? settings.slab_thickness : 1.0),
                               settings.spacing);
   std::vector<PmsSurfacePoint<Dim>> out(x.size());
+  // Particles at the members' centres are off the lattice and stand for the spheres themselves:
+  // no surface point (the lattice's estimate stays).
+  if (decided_shape(spheres, settings.shape, settings.spacing) == PmsShape::PerSphere) return out;
   for (std::size_t i = 0; i < x.size(); ++i) {
     double nearest = std::numeric_limits<double>::max();
     for (const auto& s : spheres) {

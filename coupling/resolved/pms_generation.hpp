@@ -96,8 +96,10 @@ struct PmsSurfacePoint {
 // the DEM volume (2D: the section of area V/T, the members' circles eroded or dilated uniformly,
 // see the top of this file); an outline body for the spheres themselves. Each particle's surface
 // point is the nearest of the members' (eroded) surfaces along the radius through it that no
-// other member covers; its depth and normal are that sphere's. Periodic separations by
-// `domain`'s minimum image.
+// other member covers; its depth and normal are that sphere's. A lattice node chosen from the
+// band around the level (see above) may lie just outside it: its depth is then negative. A
+// per-sphere body (pms_shape, or auto with sections at most 1.5 dx wide) gets no surface points.
+// Periodic separations by `domain`'s minimum image.
 template <int Dim>
 std::vector<PmsSurfacePoint<Dim>> pms_surface_from_spheres(const DemBody& body,
                                                            const std::vector<DemAtom>& members,

@@ -212,12 +212,7 @@ void ResolvedCoupling<Dim>::initialize(const DemState& dem, isph::IsphSolver<Dim
     const std::size_t first = P.size();
     isph::add_rigid_body<Dim>(P, b, x, pose(body));  // offsets from unwrapped positions
     for (std::size_t i = first; i < P.size(); ++i) domain.wrap(P.x[i]);
-    bool per_sphere = gen.shape == PmsShape::PerSphere;
-    if (gen.shape == PmsShape::Auto) {  // as generate_pms_particles decides it
-      per_sphere = true;
-      for (const auto& m : members_of[bi]) per_sphere = per_sphere && 2.0 * m.radius <= 1.5 * dx;
-    }
-    if (settings_.surface_from_spheres && !per_sphere) {
+    if (settings_.surface_from_spheres) {
       const auto surface = pms_surface_from_spheres<Dim>(body, members_of[bi], gen, domain, x);
       const Eigen::Matrix<double, Dim, Dim> to_body = pose(body).rotation.transpose();
       for (std::size_t k = 0; k < x.size(); ++k) {

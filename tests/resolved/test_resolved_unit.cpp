@@ -94,6 +94,28 @@ TEST(PmsGeneration, SurfaceFromSpheresIsTheSphereOrItsEquivalentSection) {
   std::printf("2D section, T = r: equivalent radius %.4f dx, depth off by %.3e dx\n", r_eq / dx,
               worst_depth / dx);
   EXPECT_LT(worst_depth, 0.05 * dx);
+
+  // A slab so thin that the section dilates by more than the sphere's radius (T = r/4: 2.31 r).
+  g.slab_thickness = 0.25 * r;
+  const auto x4 = generate_pms_particles<2>(b, s.atoms, g, isph::Vec<2>(0.0005, 0.0005));
+  const auto p4 = pms_surface_from_spheres<2>(b, s.atoms, g, isph::Domain<2>{}, x4);
+  const double r_thin = r * std::sqrt(4.0 * r / (3.0 * g.slab_thickness));
+  worst_depth = 0.0;
+  for (std::size_t k = 0; k < x4.size(); ++k)
+    worst_depth =
+        std::max(worst_depth,
+                 std::abs(p4[k].depth - (r_thin - (x4[k] - isph::Vec<2>(c3[0], c3[1])).norm())));
+  std::printf("2D section, T = r/4: equivalent radius %.4f dx, depth off by %.3e dx\n", r_thin / dx,
+              worst_depth / dx);
+  EXPECT_LT(worst_depth, 0.05 * dx);
+
+  // Spheres one spacing wide get one particle at each centre (auto): no surface points.
+  const DemState fine = clump({Vec3{0.010, 0.010, 0.0}, Vec3{0.011, 0.010, 0.0}}, 0.5 * dx, 2600);
+  g = {dx, dx, PmsShape::Auto};
+  const auto xf = generate_pms_particles<2>(fine.bodies[0], fine.atoms, g, isph::Vec<2>(0, 0));
+  for (const auto& q :
+       pms_surface_from_spheres<2>(fine.bodies[0], fine.atoms, g, isph::Domain<2>{}, xf))
+    EXPECT_FALSE(q.found);
 }
 
 // Two overlapping members: a particle in the neck between them has no exposed member surface
