@@ -195,6 +195,11 @@ class IsphSolver {
 
   Particles<Dim>& particles() { return particles_; }
   const Particles<Dim>& particles() const { return particles_; }
+  // The sum of the last step's shifts over its fluid rows: this process's own rows when the fluid
+  // is decomposed, all rows otherwise. Shifts move particles besides their velocity, so the
+  // particles carry sum(V v) + V shift_sum / dt, not sum(V v) (the mean-flow drive's "particles"
+  // flux, coupling/unresolved/mean_flow_drive.hpp).
+  const Vec<Dim>& last_shift_sum() const { return shift_sum_; }
   const Domain<Dim>& domain() const { return domain_; }
   const IsphConfig<Dim>& config() const { return config_; }
   const Kernel<Dim>& kernel() const { return kernel_; }
@@ -326,6 +331,7 @@ class IsphSolver {
   std::vector<Vec<Dim>> grad_p_;       // decomposed: the owned rows' grad p of the last step
   double max_eddy_viscosity_ = 0.0;
   std::vector<Vec<Dim>> u_star_, wall_ghost_, shift_;
+  Vec<Dim> shift_sum_ = Vec<Dim>::Zero();  // last_shift_sum()
   // Quadratic ghosts: per wall or solid row the fitted slope and curvature of the fluid's velocity
   // along its normal, and whether its own fluid neighbours determined them (1) or not (0).
   std::vector<Vec<Dim>> ghost_slope_, ghost_curvature_;

@@ -63,9 +63,11 @@ void IsphSolver<Dim>::advect(double dt, StepStats& stats) {
   if (config_.free_surface)
     separate_close_pairs(P, nb_, domain_, dt, kMinPairDistance * P.spacing, shift_, block_share());
   double vmax = 0.0, surface = 0.0, volume = 0.0;
+  shift_sum_.setZero();
   for (int i = first_; i < last_; ++i) {
     if (P.kind[i] == kWall || P.kind[i] == kSolid) continue;  // solids: placed by their body
     P.x[i] += dt * P.v[i] + shift_[i];
+    if (P.kind[i] == kFluid) shift_sum_ += shift_[i];
     keep_off_walls(i);
     domain_.wrap(P.x[i]);
     vmax = std::max(vmax, P.v[i].norm());
@@ -76,6 +78,7 @@ void IsphSolver<Dim>::advect(double dt, StepStats& stats) {
     exchange(P.x);
     exchange(P.v);
   }
+  if (blocked_ && !decomposition_) share_->sum_in_place(shift_sum_.data(), Dim);
   if (blocked_) {
     vmax = share_->max(vmax);
     surface = share_->sum(surface);

@@ -62,6 +62,7 @@ std::vector<std::string> fluid_scene_keys() {
           "inflow.max",
           "inflow.velocity",
           "inflow.direction",
+          "inflow.flux",
           "inflow.mode",
           "inflow.ramp"};
 }

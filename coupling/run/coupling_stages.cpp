@@ -28,9 +28,14 @@ std::vector<std::unique_ptr<CouplingStage<Dim>>> make_coupling_stages(const Case
     if (!(dir.norm() > 0))
       throw CaseError(
           "'inflow.direction' must be a non-zero vector (or set gravity for \"upward\")");
-    stages.push_back(
-        std::make_unique<MeanFlowDrive<Dim>>(c.number("inflow.velocity") * dir.normalized(),
-                                             scene.config.gravity, dt, scene.config.density));
+    const std::string flux = c.string("inflow.flux", "velocity");
+    if (flux != "velocity" && flux != "particles")
+      throw CaseError(
+          "'inflow.flux' must be \"velocity\" (the drive holds the particles' mean velocity) or "
+          "\"particles\" (the flux they carry: velocity plus shift)");
+    stages.push_back(std::make_unique<MeanFlowDrive<Dim>>(
+        c.number("inflow.velocity") * dir.normalized(), scene.config.gravity, dt,
+        scene.config.density, flux == "particles"));
   }
   return stages;
 }
