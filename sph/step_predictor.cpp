@@ -120,7 +120,6 @@ void IsphSolver<Dim>::fit_ghost_profiles() {
     }
     Eigen::Matrix<double, M, M> A = Eigen::Matrix<double, M, M>::Zero();
     Eigen::Matrix<double, M, Dim> R = Eigen::Matrix<double, M, Dim>::Zero();
-    double s2 = 0.0, s3 = 0.0, s4 = 0.0;
     for (int k = nb_.begin(i); k < nb_.end(i); ++k) {
       const int j = nb_.index[k];
       if (P.kind[j] == kWall || P.kind[j] == kSolid) continue;
@@ -139,21 +138,19 @@ void IsphSolver<Dim>::fit_ghost_profiles() {
       const double w = nb_.w[k];
       A.noalias() += w * phi * phi.transpose();
       R.noalias() += w * phi * (P.v[j] - P.v[i]).transpose();
-      s2 += w * s * s;
-      s3 += w * s * s * s;
-      s4 += w * s * s * s * s;
     }
-    // Neighbours at one height only (rows deeper in the wall) give no curvature.
-    if (!(s2 > 0.0) || s2 * s4 - s3 * s3 <= 0.1 * s2 * s4) continue;
+    // The profile across alone: sum w s^2, sum w s^3, sum w s^4. Neighbours at one height only
+    // (rows deeper in the wall) give no curvature.
+    const Eigen::Matrix2d across = A.template topLeftCorner<2, 2>();
+    if (!(across(0, 0) > 0.0) || across.determinant() <= 0.1 * across(0, 0) * across(1, 1))
+      continue;
     Eigen::Matrix<double, M, Dim> c;
     Eigen::FullPivLU<Eigen::Matrix<double, M, M>> lu(A);
     if (lu.isInvertible() && lu.rcond() > 1e-8) {
       c = lu.solve(R);
     } else {  // too few neighbours to the sides: the profile across alone
-      Eigen::Matrix2d a2;
-      a2 << A(0, 0), A(0, 1), A(1, 0), A(1, 1);
       c.setZero();
-      c.template topRows<2>() = a2.inverse() * R.template topRows<2>();
+      c.template topRows<2>() = across.inverse() * R.template topRows<2>();
     }
     ghost_slope_[i] = inv_dx * c.row(0).transpose();
     ghost_curvature_[i] = inv_dx * inv_dx * c.row(1).transpose();

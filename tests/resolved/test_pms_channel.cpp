@@ -62,12 +62,24 @@ ChannelResult measure(const isph::IsphSolver<2>& solver, int gap_rows, double y0
   return r;
 }
 
-ChannelResult pms_channel(int gap_rows, const std::vector<std::string>& extra = {},
-                          int wall_rows = 4, double dt_factor = 1.0) {
+// Spacing, viscosity and drive of every channel here.
+constexpr double kDx = 0.001, kNu = 1e-3, kG = 1e-3;
+
+// Steps of the viscous limit 0.125 dx^2 / nu over ten viscous times H^2 / (pi^2 nu) of the widest
+// channel (6 dx): steady to 1e-4.
+template <class Step>
+void run_to_steady(Step step) {
+  const double dt = 0.125 * kDx * kDx / kNu;
+  const double t_end = 10.0 * 36e-6 / (M_PI * M_PI * kNu) + 0.02;
+  const int steps = static_cast<int>(std::lround(t_end / dt));
+  for (int n = 0; n < steps; ++n) step(dt);
+}
+
+ChannelResult pms_channel(int gap_rows, const std::vector<std::string>& extra = {}) {
   constexpr int Dim = 2;
-  const double dx = 0.001, nu = 1e-3, g = 1e-3;
-  // The periodic box must be three kernel supports long on each axis.
-  wall_rows = std::max(wall_rows, 8 - gap_rows);
+  const double dx = kDx, nu = kNu, g = kG;
+  // Four rows of slab, or more: the periodic box must be three kernel supports long on each axis.
+  const int wall_rows = std::max(4, 8 - gap_rows);
   const int nx = 8, ny = gap_rows + wall_rows;
   const double Lx = nx * dx, Ly = ny * dx;
   std::vector<std::string> o = periodic_box_2d(Lx, Ly, dx, nu, g);
@@ -98,21 +110,17 @@ ChannelResult pms_channel(int gap_rows, const std::vector<std::string>& extra = 
     P.normal[i] = isph::Vec<Dim>(0.0, up < down ? 1.0 : -1.0);
     P.body_normal[i] = P.normal[i];
   }
-  const double dt = dt_factor * 0.125 * dx * dx / nu;
-  // Ten viscous times H^2 / (pi^2 nu) of the widest channel, steady to 1e-4.
-  const double t_end = 10.0 * 36e-6 / (M_PI * M_PI * nu) + 0.02;
-  const int steps = static_cast<int>(std::lround(t_end / dt));
   const std::vector<isph::RigidPose<Dim>> poses{pose};
-  for (int n = 0; n < steps; ++n) {
+  run_to_steady([&](double dt) {
     isph::place_rigid_solids(P, solver.domain(), poses);
     solver.step(dt);
-  }
+  });
   return measure(solver, gap_rows, wall_rows * dx, "PMS");
 }
 
 // The same channel between wall particles (walls.boxes), for comparison.
 ChannelResult wall_channel(int gap_rows, const std::vector<std::string>& extra = {}) {
-  const double dx = 0.001, nu = 1e-3, g = 1e-3;
+  const double dx = kDx, nu = kNu, g = kG;
   const double Lx = 8 * dx, H = gap_rows * dx;
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.9g", nu);
@@ -129,10 +137,7 @@ ChannelResult wall_channel(int gap_rows, const std::vector<std::string>& extra =
   for (const auto& e : extra) o.push_back(e);
   auto scene = example_scene<2>("poiseuille_2d", o);
   isph::IsphSolver<2> solver(scene.config, scene.domain, scene.particles);
-  const double dt = 0.125 * dx * dx / nu;
-  const double t_end = 10.0 * 36e-6 / (M_PI * M_PI * nu) + 0.02;
-  const int steps = static_cast<int>(std::lround(t_end / dt));
-  for (int n = 0; n < steps; ++n) solver.step(dt);
+  run_to_steady([&](double dt) { solver.step(dt); });
   return measure(solver, gap_rows, 0.0, "walls");
 }
 
