@@ -15,9 +15,16 @@ range, fluid or grain leaving its domain, grain overlap growth, energy growth), 
 squares, and the stability boundary between the largest finished and the smallest stopped Y at
 each X.
 
+With --convergence KEY (e.g. time.dt) it draws every metric (or --metric) against KEY, one line
+per combination of the other varied keys (those that change together with KEY, such as
+dem.substeps with time.dt, are left out of it), with the observed order of convergence from the
+three smallest values of KEY and each point's departure from the smallest's value and from the
+Richardson extrapolation to KEY -> 0; the numbers go to a CSV beside the PNG.
+
 usage: plot_study.py STUDY_CSV [-o PNG] [--metric NAME] [--series KEY] [--label KEY]
                      [--reference POINT]
        plot_study.py STUDY_CSV --stability X Y [-o PNG]
+       plot_study.py STUDY_CSV --convergence KEY [-o PNG] [--metric NAME]
 """
 import argparse
 import csv
@@ -46,6 +53,7 @@ def main():
     ap.add_argument("--label", default=None)
     ap.add_argument("--reference", default=None, help="the point the errors are measured against")
     ap.add_argument("--stability", nargs=2, metavar=("X", "Y"), default=None)
+    ap.add_argument("--convergence", metavar="KEY", default=None)
     args = ap.parse_args()
     with open(args.table, newline="") as f:
         rows = list(csv.DictReader(f))
@@ -54,6 +62,8 @@ def main():
     columns = list(rows[0].keys())
     if args.stability:
         return stability(args, rows, columns)
+    if args.convergence:
+        return convergence(args, rows, columns)
     metrics = [c[: -len("_error")] for c in columns if c.endswith("_error")]
     metric = args.metric or (metrics[0] if metrics else None)
     if metric is None:
@@ -202,6 +212,114 @@ def stability(args, rows, columns):
     out = args.output or args.table.rsplit(".", 1)[0] + "_stability.png"
     fig.savefig(out, dpi=120)
     print(f"plot_study: {out}")
+
+
+def observed_order(h, f):
+    """Order p of f(h) = f0 + C h^p through three points, h[0] < h[1] < h[2]; nan if the
+    differences change sign (not in the asymptotic range) or vanish."""
+    d1, d2 = f[1] - f[0], f[2] - f[1]
+    if d1 == 0 or d2 == 0 or (d1 > 0) != (d2 > 0):
+        return math.nan
+    target = d2 / d1
+
+    def ratio(p):
+        return (h[2] ** p - h[1] ** p) / (h[1] ** p - h[0] ** p)
+
+    lo, hi = 0.05, 8.0  # ratio(p) grows with p
+    if not ratio(lo) <= target <= ratio(hi):
+        return math.nan
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if ratio(mid) < target else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def varied_keys(columns):
+    # study.csv: point, the varied keys, then status and the results.
+    return columns[columns.index("point") + 1: columns.index("status")]
+
+
+def convergence(args, rows, columns):
+    """Each metric against --convergence KEY, a line per combination of the other varied keys."""
+    key = args.convergence
+    if key not in columns:
+        sys.exit(f"plot_study: no column '{key}' in {args.table}")
+    metrics = [c[: -len("_error")] for c in columns if c.endswith("_error")]
+    if args.metric:
+        if args.metric not in metrics:
+            sys.exit(f"plot_study: no metric '{args.metric}' in {args.table}")
+        metrics = [args.metric]
+    if not metrics:
+        sys.exit("plot_study: study.csv has no metric columns: the base case needs [reference]")
+    # Keys that change with KEY and only with it (dem.substeps with time.dt) do not split lines.
+    others = []
+    for k in varied_keys(columns):
+        if k == key:
+            continue
+        by_key = {}
+        if not all(by_key.setdefault(r[key], r[k]) == r[k] for r in rows):
+            others.append(k)
+    groups = {}
+    for r in rows:
+        name = ", ".join(f"{k.split('.')[-1]} {r[k]}" for k in others) or "all points"
+        groups.setdefault(name, []).append(r)
+    ncol = min(3, len(metrics))
+    nrow = (len(metrics) + ncol - 1) // ncol
+    fig, axes = plt.subplots(nrow, ncol, figsize=(4.6 * ncol, 3.6 * nrow + 0.8), squeeze=False)
+    table = []
+    for ax, metric in zip(axes.flat, metrics):
+        allv = []
+        for name, points in groups.items():
+            done = [(number(p[key]), number(p[metric]), p) for p in points
+                    if p["status"] == "finished" and math.isfinite(number(p[metric]))
+                    and math.isfinite(number(p[key]))]
+            done.sort(key=lambda t: t[0])
+            if not done:
+                continue
+            h = [t[0] for t in done]
+            f = [t[1] for t in done]
+            order = observed_order(h[:3], f[:3]) if len(done) >= 3 else math.nan
+            limit = math.nan
+            if math.isfinite(order):
+                limit = f[0] - (f[1] - f[0]) / ((h[1] / h[0]) ** order - 1)
+            for hi, fi, p in done:
+                table.append({"group": name, "metric": metric, key: p[key], "point": p["point"],
+                              "value": fi,
+                              "departure_from_finest": (fi - f[0]) / f[0] if f[0] else math.nan,
+                              "departure_from_extrapolated":
+                                  (fi - limit) / limit if math.isfinite(limit) and limit else math.nan,
+                              "observed_order": order, "extrapolated": limit})
+            label = name + (f" (p = {order:.2f})" if math.isfinite(order) else " (p: -)")
+            line, = ax.plot(h, f, "o-", label=label)
+            if math.isfinite(limit):
+                ax.axhline(limit, color=line.get_color(), linestyle=":", linewidth=1)
+            stopped = [number(p[key]) for p in points if p["status"] == "stopped"]
+            if stopped:
+                ax.plot(stopped, [f[-1]] * len(stopped), "x", color=line.get_color(), markersize=9)
+            allv += f
+        ax.set_xscale("log")
+        if allv and min(allv) > 0 and max(allv) / min(allv) >= 10:
+            ax.set_yscale("log")
+        ax.set_xlabel(key)
+        ax.set_title(metric, fontsize=10)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
+    for ax in list(axes.flat)[len(metrics):]:
+        ax.set_visible(False)
+    fig.suptitle(f"metrics against {key}: dotted, the extrapolation to {key} -> 0 "
+                 "(p: observed order from the three smallest)", fontsize=10)
+    fig.tight_layout()
+    out = args.output or args.table.rsplit(".", 1)[0] + "_convergence.png"
+    fig.savefig(out, dpi=110)
+    csv_out = out.rsplit(".", 1)[0] + ".csv"
+    with open(csv_out, "w", newline="") as f:
+        fields = ["group", "metric", key, "point", "value", "departure_from_finest",
+                  "departure_from_extrapolated", "observed_order", "extrapolated"]
+        w = csv.DictWriter(f, fieldnames=fields, lineterminator="\n")
+        w.writeheader()
+        for row in table:
+            w.writerow({k: (f"{v:.10g}" if isinstance(v, float) else v) for k, v in row.items()})
+    print(f"plot_study: {out}, {csv_out}")
 
 
 if __name__ == "__main__":

@@ -89,8 +89,13 @@ ErosionMeasures ErosionDiagnostics<Dim>::measure(const DemState& dem,
   constexpr double kColumn = 2e-3;
   const int columns = std::max(1, static_cast<int>(std::ceil((hi0_ - lo0_) / kColumn)));
   std::vector<double> top(columns, -std::numeric_limits<double>::infinity());
+  int fines = 0;
   for (const auto& a : dem.atoms) {
     const double z = height(a.x);
+    if (a.body == -1) {
+      m.mean_fine_speed += std::sqrt(a.v[0] * a.v[0] + a.v[1] * a.v[1] + a.v[2] * a.v[2]);
+      ++fines;
+    }
     if (a.body == -1 && z - a.radius > surface0_) {
       ++m.fines_above;
       m.fines_above_mass += grain_density_ * 4.0 / 3.0 * M_PI * a.radius * a.radius * a.radius;
@@ -99,6 +104,10 @@ ErosionMeasures ErosionDiagnostics<Dim>::measure(const DemState& dem,
     const int c = static_cast<int>(std::floor((a.x[h] - lo0_) / kColumn));
     if (c >= 0 && c < columns) top[c] = std::max(top[c], z + a.radius);
   }
+  if (fines) m.mean_fine_speed /= fines;
+  for (const auto& b : dem.bodies)
+    m.mean_clump_speed += std::sqrt(b.v[0] * b.v[0] + b.v[1] * b.v[1] + b.v[2] * b.v[2]);
+  if (!dem.bodies.empty()) m.mean_clump_speed /= double(dem.bodies.size());
   std::vector<double> filled;
   for (double t : top)
     if (std::isfinite(t)) filled.push_back(t);
@@ -133,14 +142,16 @@ template <int Dim>
 std::vector<std::string> ErosionDiagnostics<Dim>::columns() {
   return {"fines_above_surface",  "fines_above_mass",     "fines_out_of_window",
           "max_pore_speed_ratio", "surface_height",       "skeleton_displacement",
-          "pore_speed_p95_ratio", "mean_pore_speed_ratio"};
+          "pore_speed_p95_ratio", "mean_pore_speed_ratio", "mean_fine_speed",
+          "mean_clump_speed"};
 }
 
 template <int Dim>
 std::vector<double> ErosionDiagnostics<Dim>::row(const ErosionMeasures& m) {
   return {double(m.fines_above),  m.fines_above_mass,     double(m.fines_out_of_window),
           m.max_pore_speed_ratio, m.surface_height,       m.skeleton_displacement,
-          m.pore_speed_p95_ratio, m.mean_pore_speed_ratio};
+          m.pore_speed_p95_ratio, m.mean_pore_speed_ratio, m.mean_fine_speed,
+          m.mean_clump_speed};
 }
 
 template class ErosionDiagnostics<2>;

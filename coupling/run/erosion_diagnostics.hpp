@@ -37,6 +37,9 @@ struct ErosionMeasures {
   std::vector<double> pore_speed_ratios;
   double surface_height = 0;         // median over 2 mm columns of the highest grain top [m]
   double skeleton_displacement = 0;  // mean in-plane displacement of the clumps' centres [m]
+  // Mean speed of the free spheres and of the clumps' centres [m/s]: how lively the layer is as
+  // a whole, where max_grain_speed is one grain's (issue 46 compares time steps with these).
+  double mean_fine_speed = 0, mean_clump_speed = 0;
 };
 
 // Sorts m.pore_speed_ratios and sets their max, 95th percentile (linear between ranks) and mean

@@ -86,6 +86,11 @@ void plot(const Study& study, const fs::path& out, bool quiet, bool has_metrics)
       map += " --series " + quote(study.plot_series);
     charts.emplace_back("stability.png", map);
   }
+  if (!study.convergence.empty())
+    charts.emplace_back("convergence.png", "/usr/bin/python3 " + quote(script.string()) + " " +
+                                               quote((out / "study.csv").string()) + " -o " +
+                                               quote((out / "convergence.png").string()) +
+                                               " --convergence " + quote(study.convergence));
   for (auto& [png, command] : charts) {
     if (quiet) command += " > /dev/null";
     if (!fs::exists("/usr/bin/python3") || !fs::exists(script) || std::system(command.c_str()) != 0)

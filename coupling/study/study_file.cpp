@@ -39,6 +39,10 @@ const char* study_file_help() {
          "                                           # ended over two varied keys (by its\n"
          "                                           # cause: cfl, nan, grain_overlap, ...),\n"
          "                                           # a panel per series value\n"
+         "  convergence = \"time.dt\"                  # convergence.png (+ .csv): every metric\n"
+         "                                           # against this key, a line per value of\n"
+         "                                           # the other varied keys, with the observed\n"
+         "                                           # order and the departure from the finest\n"
          "Keys are any case keys, written as for --set (quoted, or as dotted TOML keys). The\n"
          "metrics are the base case's [reference] metrics, computed by each run into its\n"
          "result.json.\n";
@@ -328,9 +332,10 @@ class StudyLoader {
     if (!t) throw CaseError("'plot' must be a table: [plot] with metric, series and label");
     for (const auto& [key, v] : *t) {
       const std::string k(key.str());
-      if (k != "metric" && k != "series" && k != "label" && k != "stability")
+      if (k != "metric" && k != "series" && k != "label" && k != "stability" &&
+          k != "convergence")
         throw CaseError(here(v) + ": unknown key '" + k +
-                        "' in [plot]; it has metric, series, label and stability");
+                        "' in [plot]; it has metric, series, label, stability and convergence");
       if (k == "stability") {
         const auto* arr = v.as_array();
         if (!arr || arr->size() != 2 || !(*arr)[0].is_string() || !(*arr)[1].is_string())
@@ -352,7 +357,9 @@ class StudyLoader {
     }
     study_.plot_series = (*t)["series"].value_or(std::string());
     study_.plot_label = (*t)["label"].value_or(std::string());
-    std::vector<const std::string*> keys{&study_.plot_series, &study_.plot_label};
+    study_.convergence = (*t)["convergence"].value_or(std::string());
+    std::vector<const std::string*> keys{&study_.plot_series, &study_.plot_label,
+                                         &study_.convergence};
     for (const auto& k : study_.stability) keys.push_back(&k);
     for (const auto* k : keys)
       if (!k->empty() && !(k == &study_.plot_label && *k == "point") &&

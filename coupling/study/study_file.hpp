@@ -25,6 +25,7 @@ struct Study {
   std::string plot_series;             // [plot] series: one line per value of this key
   std::string plot_label;              // [plot] label: the key whose value labels each point
   std::vector<std::string> stability;  // [plot] stability = [x, y]: stability.png over two keys
+  std::string convergence;  // [plot] convergence: convergence.png, the metrics against this key
   // reference = "point": every metric is measured against this point's value (a fine-resolution
   // run where no analytic answer exists) instead of the case's expected value.
   std::string reference_point;

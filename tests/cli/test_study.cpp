@@ -80,6 +80,62 @@ TEST(Study, ErrorFallsWithResolutionAndABadPointIsRecorded) {
   }
 }
 
+// The convergence chart's numbers (scripts/plot_study.py --convergence, what `[plot] convergence`
+// draws) on a table whose answers are known exactly: per model, f = 2 + 3 dt (first order) and
+// f = 5 - 4e4 dt^2 (second), at steps whose ratios differ (1e-3, 4e-4, 2e-4, 1e-4), and a series
+// whose differences change sign (no asymptotic range: no order). dem.substeps changes with time.dt
+// only, so it must not split the lines.
+TEST(Study, ConvergenceChartGivesTheOrderAndLimitOfKnownSeries) {
+  if (run_shell("/usr/bin/python3 -c 'import matplotlib'").exit_code != 0)
+    GTEST_SKIP() << "/usr/bin/python3 lacks matplotlib";
+  const auto dir = scratch("study_convergence_chart");
+  std::string csv = "point,coupling.model,dem.substeps,time.dt,status,cause,wall_seconds,f,"
+                    "f_expected,f_error,g,g_expected,g_error\n";
+  const double dts[] = {1e-3, 4e-4, 2e-4, 1e-4};
+  for (const std::string model : {"first", "second", "noisy"})
+    for (int k = 0; k < 4; ++k) {
+      const double dt = dts[k];
+      const double f = model == "first"    ? 2 + 3 * dt
+                       : model == "second" ? 5 - 4e4 * dt * dt
+                                           : (k % 2 ? 1.0 : 1.1);
+      char line[256];
+      std::snprintf(line, sizeof line, "%s_%d,%s,%d,%.17g,finished,,1,%.17g,nan,nan,1,nan,nan\n",
+                    model.c_str(), k, model.c_str(), int(std::lround(dt * 1e6)), dt, f);
+      csv += line;
+    }
+  write_file(dir / "study.csv", csv);
+  const Result r = run_shell("/usr/bin/python3 " + std::string(ISPHDEM_SOURCE_DIR) +
+                             "/scripts/plot_study.py " + (dir / "study.csv").string() + " -o " +
+                             (dir / "convergence.png").string() + " --convergence time.dt");
+  std::printf("%s", r.output.c_str());
+  ASSERT_EQ(r.exit_code, 0);
+  EXPECT_TRUE(fs::exists(dir / "convergence.png"));
+  const auto rows = read_csv(dir / "convergence.csv");
+  ASSERT_EQ(rows.size(), 24u);  // 3 models x 4 steps x 2 metrics
+  int checked = 0;
+  for (const auto& row : rows) {
+    if (row.at("metric") != "f") continue;
+    const std::string& group = row.at("group");
+    const double order = std::stod(row.at("observed_order"));
+    const double limit = std::stod(row.at("extrapolated"));
+    if (group == "model first") {
+      EXPECT_NEAR(order, 1.0, 1e-6);
+      EXPECT_NEAR(limit, 2.0, 1e-9);
+    } else if (group == "model second") {
+      EXPECT_NEAR(order, 2.0, 1e-6);
+      EXPECT_NEAR(limit, 5.0, 1e-9);
+      if (row.at("time.dt") == "0.001") {  // 5 - 0.04 against 5 - 0.0004
+        EXPECT_NEAR(std::stod(row.at("departure_from_finest")), -0.0396 / 4.9996, 1e-9);
+      }
+    } else {
+      EXPECT_EQ(group, "model noisy");
+      EXPECT_TRUE(std::isnan(order));
+    }
+    ++checked;
+  }
+  EXPECT_EQ(checked, 12);
+}
+
 // Where no analytic answer exists, a study measures its points against one of them (a
 // fine-resolution run): the coarse Taylor-Green point against the fine one must show the damping
 // the coarse spacing adds (about 1.4% more than at half the spacing, by the analytic errors of
