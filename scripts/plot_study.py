@@ -267,9 +267,11 @@ def convergence(args, rows, columns):
     nrow = (len(metrics) + ncol - 1) // ncol
     fig, axes = plt.subplots(nrow, ncol, figsize=(4.6 * ncol, 3.6 * nrow + 0.8), squeeze=False)
     table = []
+    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     for ax, metric in zip(axes.flat, metrics):
-        allv = []
-        for name, points in groups.items():
+        allv, orders = [], []
+        for g, (name, points) in enumerate(groups.items()):
+            color = colors[g % len(colors)]
             done = [(number(p[key]), number(p[metric]), p) for p in points
                     if p["status"] == "finished" and math.isfinite(number(p[metric]))
                     and math.isfinite(number(p[key]))]
@@ -289,26 +291,35 @@ def convergence(args, rows, columns):
                               "departure_from_extrapolated":
                                   (fi - limit) / limit if math.isfinite(limit) and limit else math.nan,
                               "observed_order": order, "extrapolated": limit})
-            label = name + (f" (p = {order:.2f})" if math.isfinite(order) else " (p: -)")
-            line, = ax.plot(h, f, "o-", label=label)
+            orders.append(f"{order:.2f}" if math.isfinite(order) else "-")
+            ax.plot(h, f, "o-", color=color, label=name)
             if math.isfinite(limit):
-                ax.axhline(limit, color=line.get_color(), linestyle=":", linewidth=1)
+                ax.axhline(limit, color=color, linestyle=":", linewidth=1)
             stopped = [number(p[key]) for p in points if p["status"] == "stopped"]
             if stopped:
-                ax.plot(stopped, [f[-1]] * len(stopped), "x", color=line.get_color(), markersize=9)
+                ax.plot(stopped, [f[-1]] * len(stopped), "x", color=color, markersize=9,
+                        label=f"{name}: stopped")
             allv += f
         ax.set_xscale("log")
         if allv and min(allv) > 0 and max(allv) / min(allv) >= 10:
             ax.set_yscale("log")
         ax.set_xlabel(key)
-        ax.set_title(metric, fontsize=10)
+        ax.set_title(f"{metric} (p: {', '.join(orders)})", fontsize=9)
         ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=7)
     for ax in list(axes.flat)[len(metrics):]:
         ax.set_visible(False)
-    fig.suptitle(f"metrics against {key}: dotted, the extrapolation to {key} -> 0 "
-                 "(p: observed order from the three smallest)", fontsize=10)
-    fig.tight_layout()
+    # The lines are the same groups in every panel, in the same colours: one legend below.
+    handles, labels = [], []
+    for ax in axes.flat:
+        for hnd, lab in zip(*ax.get_legend_handles_labels()):
+            if lab not in labels:
+                handles.append(hnd)
+                labels.append(lab)
+    fig.legend(handles, labels, loc="lower center", ncol=min(4, len(labels)), fontsize=8)
+    fig.suptitle(f"metrics against {key}; dotted: the extrapolation to {key} -> 0; p: the observed "
+                 "order from the three smallest, per line in legend order (-: not monotone)",
+                 fontsize=9)
+    fig.tight_layout(rect=(0, 0.04 + 0.02 * ((len(labels) - 1) // 4), 1, 1))
     out = args.output or args.table.rsplit(".", 1)[0] + "_convergence.png"
     fig.savefig(out, dpi=110)
     csv_out = out.rsplit(".", 1)[0] + ".csv"

@@ -140,16 +140,16 @@ ErosionMeasures ErosionDiagnostics<Dim>::measure(const DemState& dem,
 
 template <int Dim>
 std::vector<std::string> ErosionDiagnostics<Dim>::columns() {
-  return {"fines_above_surface",  "fines_above_mass",     "fines_out_of_window",
-          "max_pore_speed_ratio", "surface_height",       "skeleton_displacement",
+  return {"fines_above_surface",  "fines_above_mass",      "fines_out_of_window",
+          "max_pore_speed_ratio", "surface_height",        "skeleton_displacement",
           "pore_speed_p95_ratio", "mean_pore_speed_ratio", "mean_fine_speed",
           "mean_clump_speed"};
 }
 
 template <int Dim>
 std::vector<double> ErosionDiagnostics<Dim>::row(const ErosionMeasures& m) {
-  return {double(m.fines_above),  m.fines_above_mass,     double(m.fines_out_of_window),
-          m.max_pore_speed_ratio, m.surface_height,       m.skeleton_displacement,
+  return {double(m.fines_above),  m.fines_above_mass,      double(m.fines_out_of_window),
+          m.max_pore_speed_ratio, m.surface_height,        m.skeleton_displacement,
           m.pore_speed_p95_ratio, m.mean_pore_speed_ratio, m.mean_fine_speed,
           m.mean_clump_speed};
 }

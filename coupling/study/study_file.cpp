@@ -332,8 +332,7 @@ class StudyLoader {
     if (!t) throw CaseError("'plot' must be a table: [plot] with metric, series and label");
     for (const auto& [key, v] : *t) {
       const std::string k(key.str());
-      if (k != "metric" && k != "series" && k != "label" && k != "stability" &&
-          k != "convergence")
+      if (k != "metric" && k != "series" && k != "label" && k != "stability" && k != "convergence")
         throw CaseError(here(v) + ": unknown key '" + k +
                         "' in [plot]; it has metric, series, label, stability and convergence");
       if (k == "stability") {

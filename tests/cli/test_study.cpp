@@ -89,8 +89,9 @@ TEST(Study, ConvergenceChartGivesTheOrderAndLimitOfKnownSeries) {
   if (run_shell("/usr/bin/python3 -c 'import matplotlib'").exit_code != 0)
     GTEST_SKIP() << "/usr/bin/python3 lacks matplotlib";
   const auto dir = scratch("study_convergence_chart");
-  std::string csv = "point,coupling.model,dem.substeps,time.dt,status,cause,wall_seconds,f,"
-                    "f_expected,f_error,g,g_expected,g_error\n";
+  std::string csv =
+      "point,coupling.model,dem.substeps,time.dt,status,cause,wall_seconds,f,"
+      "f_expected,f_error,g,g_expected,g_error\n";
   const double dts[] = {1e-3, 4e-4, 2e-4, 1e-4};
   for (const std::string model : {"first", "second", "noisy"})
     for (int k = 0; k < 4; ++k) {

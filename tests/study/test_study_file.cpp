@@ -204,5 +204,26 @@ TEST_F(StudyFile, ReferencePointMustBeAPointOfTheStudy) {
   EXPECT_NE(error("reference = 3\n" + grid).find("the name of a point"), std::string::npos);
 }
 
+// Every study of examples/studies loads as `isphdem study` loads it (keys, points, [plot]), so a
+// renamed case key or a plot option a study names but the code lost stops here, not after an
+// hour of points. The convergence study must keep its chart's key among the varied ones.
+TEST_F(StudyFile, EveryExampleStudyLoads) {
+  int n = 0;
+  for (const auto& e :
+       fs::directory_iterator(fs::path(ISPHDEM_SOURCE_DIR) / "examples" / "studies")) {
+    if (e.path().extension() != ".toml") continue;
+    SCOPED_TRACE(e.path().string());
+    Study s;
+    EXPECT_NO_THROW(s = load_study(e.path(), {}, case_keys()));
+    EXPECT_FALSE(s.points.empty());
+    if (e.path().stem() == "erosion_dt") {
+      EXPECT_EQ(s.convergence, "time.dt");
+      EXPECT_EQ(s.points.size(), 28u);
+    }
+    ++n;
+  }
+  EXPECT_GE(n, 13);
+}
+
 }  // namespace
 }  // namespace isphdem
