@@ -41,7 +41,8 @@ TEST(Study, ErrorFallsWithResolutionAndABadPointIsRecorded) {
                                 "[grid]\n\"particles.spacing\" = [0.05, 0.025]\n"
                                 "[[points]]\nname = \"dt-too-large\"\n"
                                 "set = { \"particles.spacing\" = 0.05, \"time.dt\" = 0.1 }\n"
-                                "[plot]\nstability = [\"particles.spacing\", \"time.dt\"]\n");
+                                "[plot]\nstability = [\"particles.spacing\", \"time.dt\"]\n"
+                                "convergence = \"particles.spacing\"\n");
   const Result r = study(file.string() + " --out " + (dir / "out").string() + " -j 2");
   std::printf("%s", r.output.c_str());
   ASSERT_EQ(r.exit_code, 0);
@@ -77,6 +78,14 @@ TEST(Study, ErrorFallsWithResolutionAndABadPointIsRecorded) {
   if (fs::exists("/usr/bin/python3")) {
     EXPECT_TRUE(fs::exists(dir / "out" / "study.png"));
     EXPECT_TRUE(fs::exists(dir / "out" / "stability.png"));
+    // The amplitude against the spacing: two finished points of one line (the refused point
+    // has no value), too few for an order.
+    EXPECT_TRUE(fs::exists(dir / "out" / "convergence.png"));
+    const auto conv = read_csv(dir / "out" / "convergence.csv");
+    ASSERT_EQ(conv.size(), 2u);
+    EXPECT_EQ(conv[0].at("metric"), "amplitude");
+    EXPECT_EQ(conv[0].at("particles.spacing"), "0.025");
+    EXPECT_EQ(conv[1].at("departure_from_finest").empty(), false);
   }
 }
 
