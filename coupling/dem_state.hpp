@@ -5,6 +5,7 @@
 #define ISPHDEM_DEM_STATE_HPP
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -13,6 +14,8 @@ namespace isphdem {
 using Vec3 = std::array<double, 3>;
 using Quat = std::array<double, 4>;  // (w, x, y, z), body principal frame -> space
 using Mat3 = std::array<Vec3, 3>;    // row-major
+
+inline double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
 struct DemAtom {
   int tag = 0;

@@ -44,6 +44,11 @@ def number(text):
         return math.nan
 
 
+def metric_names(columns):
+    # study.csv: each metric as <name>, <name>_expected, <name>_error.
+    return [c[: -len("_error")] for c in columns if c.endswith("_error")]
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("table")
@@ -64,7 +69,7 @@ def main():
         return stability(args, rows, columns)
     if args.convergence:
         return convergence(args, rows, columns)
-    metrics = [c[: -len("_error")] for c in columns if c.endswith("_error")]
+    metrics = metric_names(columns)
     metric = args.metric or (metrics[0] if metrics else None)
     if metric is None:
         sys.exit("plot_study: study.csv has no metric columns: the base case needs [reference]")
@@ -244,7 +249,7 @@ def convergence(args, rows, columns):
     key = args.convergence
     if key not in columns:
         sys.exit(f"plot_study: no column '{key}' in {args.table}")
-    metrics = [c[: -len("_error")] for c in columns if c.endswith("_error")]
+    metrics = metric_names(columns)
     if args.metric:
         if args.metric not in metrics:
             sys.exit(f"plot_study: no metric '{args.metric}' in {args.table}")
@@ -284,7 +289,7 @@ def convergence(args, rows, columns):
             limit = math.nan
             if math.isfinite(order):
                 limit = f[0] - (f[1] - f[0]) / ((h[1] / h[0]) ** order - 1)
-            for hi, fi, p in done:
+            for _, fi, p in done:
                 table.append({"group": name, "metric": metric, key: p[key], "point": p["point"],
                               "value": fi,
                               "departure_from_finest": (fi - f[0]) / f[0] if f[0] else math.nan,

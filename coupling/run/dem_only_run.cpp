@@ -71,8 +71,7 @@ int run_dem_only(const CaseFile& c, const fs::path& out, bool quiet, RunReport& 
     add_dem_groups(state, HydroLoads{}, snap);
     writer->write(snap);
     double vmax = 0.0;
-    for (const auto& a : state.atoms)
-      vmax = std::max(vmax, std::sqrt(a.v[0] * a.v[0] + a.v[1] * a.v[1] + a.v[2] * a.v[2]));
+    for (const auto& a : state.atoms) vmax = std::max(vmax, norm(a.v));
     diagnostics->row({t, double(state.step), omp_get_wtime() - start, 0.0, vmax,
                       double(state.atoms.size()), double(state.bodies.size())});
     progress.update(t, chunk);

@@ -93,7 +93,7 @@ ErosionMeasures ErosionDiagnostics<Dim>::measure(const DemState& dem,
   for (const auto& a : dem.atoms) {
     const double z = height(a.x);
     if (a.body == -1) {
-      m.mean_fine_speed += std::sqrt(a.v[0] * a.v[0] + a.v[1] * a.v[1] + a.v[2] * a.v[2]);
+      m.mean_fine_speed += norm(a.v);
       ++fines;
     }
     if (a.body == -1 && z - a.radius > surface0_) {
@@ -105,8 +105,7 @@ ErosionMeasures ErosionDiagnostics<Dim>::measure(const DemState& dem,
     if (c >= 0 && c < columns) top[c] = std::max(top[c], z + a.radius);
   }
   if (fines) m.mean_fine_speed /= fines;
-  for (const auto& b : dem.bodies)
-    m.mean_clump_speed += std::sqrt(b.v[0] * b.v[0] + b.v[1] * b.v[1] + b.v[2] * b.v[2]);
+  for (const auto& b : dem.bodies) m.mean_clump_speed += norm(b.v);
   if (!dem.bodies.empty()) m.mean_clump_speed /= double(dem.bodies.size());
   std::vector<double> filled;
   for (double t : top)

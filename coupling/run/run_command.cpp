@@ -295,13 +295,10 @@ int run_coupled(const CaseFile& given, const Arguments& args, RunReport& report)
         set_pore_speeds(em);
       }
       if (rank == 0) {
-        auto speed = [](const Vec3& v) {
-          return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-        };
         double vmax = 0.0, body_vmax = 0.0;
         for (const auto& a : state.atoms)
-          if (a.body == -1) vmax = std::max(vmax, speed(a.v));
-        for (const auto& b : state.bodies) body_vmax = std::max(body_vmax, speed(b.v));
+          if (a.body == -1) vmax = std::max(vmax, norm(a.v));
+        for (const auto& b : state.bodies) body_vmax = std::max(body_vmax, norm(b.v));
         double drag_up = 0.0, res_up = 0.0;
         std::size_t floored = 0;
         if (unresolved) {  // coupling.model = "resolved" has no porosity/drag stage

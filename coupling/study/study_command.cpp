@@ -62,9 +62,12 @@ std::string quote(const std::string& s) {
 // CSV is complete either way.
 void plot(const Study& study, const fs::path& out, bool quiet, bool has_metrics) {
   const fs::path script = fs::path(ISPHDEM_SCRIPTS_DIR) / "plot_study.py";
-  std::string cmd = "/usr/bin/python3 " + quote(script.string()) + " " +
-                    quote((out / "study.csv").string()) + " -o " +
-                    quote((out / "study.png").string());
+  // The script on study.csv, drawing into OUT/png; each chart adds its own options.
+  const auto draw = [&](const char* png) {
+    return "/usr/bin/python3 " + quote(script.string()) + " " +
+           quote((out / "study.csv").string()) + " -o " + quote((out / png).string());
+  };
+  std::string cmd = draw("study.png");
   if (!study.plot_metric.empty()) cmd += " --metric " + quote(study.plot_metric);
   if (!study.plot_series.empty()) cmd += " --series " + quote(study.plot_series);
   if (!study.plot_label.empty()) cmd += " --label " + quote(study.plot_label);
@@ -76,10 +79,8 @@ void plot(const Study& study, const fs::path& out, bool quiet, bool has_metrics)
     std::printf(
         "isphdem study: no point reported an error against an expected value: no study.png\n");
   if (!study.stability.empty()) {
-    std::string map = "/usr/bin/python3 " + quote(script.string()) + " " +
-                      quote((out / "study.csv").string()) + " -o " +
-                      quote((out / "stability.png").string()) + " --stability " +
-                      quote(study.stability[0]) + " " + quote(study.stability[1]);
+    std::string map = draw("stability.png") + " --stability " + quote(study.stability[0]) + " " +
+                      quote(study.stability[1]);
     // One panel per series value (a map per model), unless the series is an axis of the map.
     if (!study.plot_series.empty() && study.plot_series != study.stability[0] &&
         study.plot_series != study.stability[1])
@@ -87,10 +88,8 @@ void plot(const Study& study, const fs::path& out, bool quiet, bool has_metrics)
     charts.emplace_back("stability.png", map);
   }
   if (!study.convergence.empty())
-    charts.emplace_back("convergence.png", "/usr/bin/python3 " + quote(script.string()) + " " +
-                                               quote((out / "study.csv").string()) + " -o " +
-                                               quote((out / "convergence.png").string()) +
-                                               " --convergence " + quote(study.convergence));
+    charts.emplace_back("convergence.png",
+                        draw("convergence.png") + " --convergence " + quote(study.convergence));
   for (auto& [png, command] : charts) {
     if (quiet) command += " > /dev/null";
     if (!fs::exists("/usr/bin/python3") || !fs::exists(script) || std::system(command.c_str()) != 0)
